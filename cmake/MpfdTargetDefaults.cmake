@@ -1,0 +1,32 @@
+# mpfd_target_defaults(<target>): warnings, sanitizers and CPU tuning shared by
+# every MPFD target, so that no folder sets its own flags.
+function(mpfd_target_defaults target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
+                                           -Wnon-virtual-dtor -Wconversion -Wno-sign-conversion)
+  if(MPFD_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(MPFD_NATIVE)
+    target_compile_options(${target} PRIVATE -march=native)
+  endif()
+  if(MPFD_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                             -fno-sanitize-recover=undefined)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()
+
+# mpfd_add_unit_test(<name> SOURCES <files...> LIBS <targets...>): one GoogleTest
+# executable registered with CTest, test by test, under the "unit" label.
+function(mpfd_add_unit_test name)
+  cmake_parse_arguments(arg "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  add_executable(${name} ${arg_SOURCES})
+  target_link_libraries(${name} PRIVATE ${arg_LIBS} GTest::gtest GTest::gtest_main)
+  mpfd_target_defaults(${name})
+  if(NOT arg_TIMEOUT)
+    set(arg_TIMEOUT 120)
+  endif()
+  gtest_discover_tests(${name} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
+                       PROPERTIES LABELS "unit;${arg_LABELS}" TIMEOUT ${arg_TIMEOUT}
+                       DISCOVERY_TIMEOUT 60)
+endfunction()
