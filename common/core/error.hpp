@@ -28,7 +28,7 @@ class InvariantError : public std::logic_error {
 }  // namespace mpfd
 
 /// Checks an invariant in every build type (cheap checks only; never in inner loops).
-#define MPFD_ASSERT(expr, message)                            \
-  do {                                                        \
-    if (!(expr)) ::mpfd::fail_invariant(#expr, (message));    \
+#define MPFD_ASSERT(expr, message)                         \
+  do {                                                     \
+    if (!(expr)) ::mpfd::fail_invariant(#expr, (message)); \
   } while (false)

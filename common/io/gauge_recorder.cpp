@@ -1,0 +1,77 @@
+#include "common/io/gauge_recorder.hpp"
+
+#include <cstdio>
+
+#include "common/core/error.hpp"
+#include "common/io/hdf5_file.hpp"
+#include "common/io/output_directory.hpp"
+
+namespace mpfd::io {
+namespace {
+
+void write_csv_number(std::ofstream& csv, double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", x);
+  csv << text;
+}
+
+}  // namespace
+
+GaugeRecorder::GaugeRecorder(std::filesystem::path out_dir, std::vector<GaugePoint> gauges,
+                             std::vector<GaugeQuantity> quantities)
+    : out_dir_(std::move(out_dir)), gauges_(std::move(gauges)), quantities_(std::move(quantities)) {
+  const auto path = out_dir_ / "gauges.csv";
+  csv_.open(path, std::ios::trunc);
+  if (!csv_) throw Error("cannot open " + path.string() + " for writing");
+  csv_ << "time[s]";
+  for (const auto& g : gauges_)
+    for (const auto& q : quantities_)
+      csv_ << ',' << g.name << '.' << q.name << '[' << q.units << ']';
+  csv_ << '\n';
+}
+
+void GaugeRecorder::reserve(std::size_t samples) {
+  times_.reserve(samples);
+  values_.reserve(samples * gauges_.size() * quantities_.size());
+}
+
+void GaugeRecorder::record(double time, std::span<const double> values) {
+  if (values.size() != gauges_.size() * quantities_.size())
+    throw Error("gauge sample has " + std::to_string(values.size()) + " values; expected " +
+                std::to_string(gauges_.size() * quantities_.size()));
+  times_.push_back(time);
+  values_.insert(values_.end(), values.begin(), values.end());
+  write_csv_number(csv_, time);
+  for (const double v : values) {
+    csv_ << ',';
+    write_csv_number(csv_, v);
+  }
+  csv_ << '\n';
+}
+
+void GaugeRecorder::flush() {
+  csv_.flush();
+  if (!csv_) throw Error("cannot write " + (out_dir_ / "gauges.csv").string() + " (disk full?)");
+  const std::size_t samples = times_.size();
+  const std::size_t per_sample = gauges_.size() * quantities_.size();
+  std::vector<double> history(samples);
+  write_path_atomically(out_dir_ / "gauges.h5", [&](const std::filesystem::path& partial) {
+    Hdf5File h5(partial, Hdf5File::Mode::create);
+    h5.write_attribute("/", "format", std::string("mpfd-gauges"));
+    h5.write_attribute("/", "format_version", std::int64_t{kOutputFormatVersion});
+    h5.write_dataset("/time", times_, {samples}, "s");
+    for (std::size_t g = 0; g < gauges_.size(); ++g) {
+      const std::string group = "/gauges/" + gauges_[g].name;
+      h5.create_group(group);
+      h5.write_attribute(group, "position", gauges_[g].position);
+      for (std::size_t q = 0; q < quantities_.size(); ++q) {
+        for (std::size_t s = 0; s < samples; ++s)
+          history[s] = values_[s * per_sample + g * quantities_.size() + q];
+        h5.write_dataset(group + "/" + quantities_[q].name, history, {samples},
+                         quantities_[q].units);
+      }
+    }
+  });
+}
+
+}  // namespace mpfd::io
