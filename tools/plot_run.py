@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""Plots an MPFD output folder (docs/output.md, format version 1).
+
+Writes DIR/plots/profiles.png (every scalar cell field along x through the
+grid's centre line, one curve per snapshot) and DIR/plots/gauges.png (every
+gauge quantity against time). Uses Debian's python3-numpy, -h5py, -matplotlib.
+
+Usage: /usr/bin/python3 tools/plot_run.py DIR
+"""
+import glob
+import os
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+SUPPORTED_VERSION = 1
+
+
+def check_version(h5, path):
+    version = int(h5.attrs["format_version"])
+    if version != SUPPORTED_VERSION:
+        sys.exit(f"{path}: format_version {version}, this script reads {SUPPORTED_VERSION}")
+
+
+def plot_profiles(out_dir, plots_dir):
+    files = sorted(glob.glob(os.path.join(out_dir, "snapshots", "snapshot_*.h5")))
+    if not files:
+        return None
+    with h5py.File(files[0], "r") as h5:
+        check_version(h5, files[0])
+        fields = [n for n, d in h5["cells"].items() if d.ndim == 3]
+        origin, spacing = h5["grid"].attrs["origin"], h5["grid"].attrs["spacing"]
+        nz, ny, nx = h5["cells"][fields[0]].shape
+    x = origin[0] + (np.arange(nx) + 0.5) * spacing[0]
+    fig, axes = plt.subplots(len(fields), 1, figsize=(7, 2.2 * len(fields)), sharex=True,
+                             squeeze=False)
+    for path in files:
+        with h5py.File(path, "r") as h5:
+            label = f"t = {h5.attrs['time'] * 1e6:.1f} µs"
+            for ax, name in zip(axes[:, 0], fields):
+                data = h5["cells"][name]
+                ax.plot(x * 1e3, data[nz // 2, ny // 2, :], label=label)
+                ax.set_ylabel(f"{name}\n[{data.attrs['units']}]")
+    axes[-1, 0].set_xlabel("x [mm]")
+    axes[0, 0].legend(fontsize="small")
+    fig.suptitle("cell fields along x through the grid centre")
+    fig.tight_layout()
+    target = os.path.join(plots_dir, "profiles.png")
+    fig.savefig(target, dpi=110)
+    plt.close(fig)
+    return target
+
+
+def plot_gauges(out_dir, plots_dir):
+    path = os.path.join(out_dir, "gauges.h5")
+    if not os.path.exists(path):
+        return None
+    with h5py.File(path, "r") as h5:
+        check_version(h5, path)
+        time = h5["time"][:]
+        gauges = list(h5["gauges"].keys())
+        if not gauges or time.size == 0:
+            return None
+        quantities = list(h5["gauges"][gauges[0]].keys())
+        fig, axes = plt.subplots(len(quantities), 1, figsize=(7, 2.4 * len(quantities)),
+                                 sharex=True, squeeze=False)
+        for ax, q in zip(axes[:, 0], quantities):
+            for g in gauges:
+                data = h5["gauges"][g][q]
+                ax.plot(time * 1e6, data[:], marker="." if time.size < 30 else None, label=g)
+                ax.set_ylabel(f"{q}\n[{data.attrs['units']}]")
+        axes[-1, 0].set_xlabel("time [µs]")
+        axes[0, 0].legend(fontsize="small")
+    fig.suptitle("gauge histories")
+    fig.tight_layout()
+    target = os.path.join(plots_dir, "gauges.png")
+    fig.savefig(target, dpi=110)
+    plt.close(fig)
+    return target
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out_dir = sys.argv[1]
+    if not os.path.isdir(out_dir):
+        sys.exit(f"plot_run.py: {out_dir} is not an output folder")
+    plots_dir = os.path.join(out_dir, "plots")
+    os.makedirs(plots_dir, exist_ok=True)
+    for target in (plot_profiles(out_dir, plots_dir), plot_gauges(out_dir, plots_dir)):
+        if target:
+            print(target)
+
+
+if __name__ == "__main__":
+    main()
