@@ -3,6 +3,8 @@
 function(mpfd_target_defaults target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
                                            -Wnon-virtual-dtor -Wconversion -Wno-sign-conversion)
+  # Lets loops over EOS and flux kernels vectorise (sqrt, exp); IEEE results unchanged.
+  target_compile_options(${target} PRIVATE -fno-math-errno -fno-trapping-math)
   if(MPFD_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
@@ -26,7 +28,10 @@ function(mpfd_add_unit_test name)
   if(NOT arg_TIMEOUT)
     set(arg_TIMEOUT 120)
   endif()
+  set(labels unit ${arg_LABELS})
+  string(REPLACE ";" "\\;" labels "${labels}")
   gtest_discover_tests(${name} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
-                       PROPERTIES LABELS "unit;${arg_LABELS}" TIMEOUT ${arg_TIMEOUT}
+                       TEST_PREFIX "${name}."
+                       PROPERTIES LABELS "${labels}" TIMEOUT ${arg_TIMEOUT}
                        DISCOVERY_TIMEOUT 60)
 endfunction()

@@ -21,6 +21,18 @@ import numpy as np  # noqa: E402
 SUPPORTED_VERSION = 1
 
 
+def units(dataset):
+    value = dataset.attrs.get("units", b"")
+    text = value.decode() if isinstance(value, bytes) else str(value)
+    return f"[{text}]" if text else ""
+
+
+def use_log_scale_if_wide(ax, values):
+    positive = values[values > 0]
+    if positive.size == values.size and positive.size and positive.max() > 100 * positive.min():
+        ax.set_yscale("log")
+
+
 def check_version(h5, path):
     version = int(h5.attrs["format_version"])
     if version != SUPPORTED_VERSION:
@@ -44,8 +56,10 @@ def plot_profiles(out_dir, plots_dir):
             label = f"t = {h5.attrs['time'] * 1e6:.1f} µs"
             for ax, name in zip(axes[:, 0], fields):
                 data = h5["cells"][name]
-                ax.plot(x * 1e3, data[nz // 2, ny // 2, :], label=label)
-                ax.set_ylabel(f"{name}\n[{data.attrs['units']}]")
+                line = data[nz // 2, ny // 2, :]
+                ax.plot(x * 1e3, line, label=label)
+                ax.set_ylabel(f"{name}\n{units(data)}")
+                use_log_scale_if_wide(ax, line)
     axes[-1, 0].set_xlabel("x [mm]")
     axes[0, 0].legend(fontsize="small")
     fig.suptitle("cell fields along x through the grid centre")
@@ -73,7 +87,7 @@ def plot_gauges(out_dir, plots_dir):
             for g in gauges:
                 data = h5["gauges"][g][q]
                 ax.plot(time * 1e6, data[:], marker="." if time.size < 30 else None, label=g)
-                ax.set_ylabel(f"{q}\n[{data.attrs['units']}]")
+                ax.set_ylabel(f"{q}\n{units(data)}")
         axes[-1, 0].set_xlabel("time [µs]")
         axes[0, 0].legend(fontsize="small")
     fig.suptitle("gauge histories")

@@ -2,11 +2,10 @@
 
 namespace mpfd {
 
-void fail_invariant(const char* expression, const std::string& message,
-                    std::source_location where) {
-  throw InvariantError(std::string("internal error: ") + expression + " failed at " +
-                       where.file_name() + ":" + std::to_string(where.line()) + " in " +
-                       where.function_name() + ": " + message);
+void fail_invariant(const char* expression, const std::string& message, const char* file, int line,
+                    const char* function) {
+  throw InvariantError(std::string("internal error: ") + expression + " failed at " + file + ":" +
+                       std::to_string(line) + " in " + function + ": " + message);
 }
 
 }  // namespace mpfd

@@ -4,7 +4,6 @@
 // the rule; broken invariants are MPFD_ASSERT, which names the expression and
 // the source location. Only main() turns either into an exit code.
 
-#include <source_location>
 #include <stdexcept>
 #include <string>
 
@@ -23,12 +22,12 @@ class InvariantError : public std::logic_error {
 };
 
 [[noreturn]] void fail_invariant(const char* expression, const std::string& message,
-                                 std::source_location where = std::source_location::current());
+                                 const char* file, int line, const char* function);
 
 }  // namespace mpfd
 
 /// Checks an invariant in every build type (cheap checks only; never in inner loops).
-#define MPFD_ASSERT(expr, message)                         \
-  do {                                                     \
-    if (!(expr)) ::mpfd::fail_invariant(#expr, (message)); \
+#define MPFD_ASSERT(expr, message)                                                       \
+  do {                                                                                   \
+    if (!(expr)) ::mpfd::fail_invariant(#expr, (message), __FILE__, __LINE__, __func__); \
   } while (false)
