@@ -1,0 +1,13 @@
+#include "common/config/scene.hpp"
+
+#include <algorithm>
+
+namespace mpfd::config {
+
+const Material* find_material(const Scene& scene, std::string_view name) {
+  const auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
+                               [&](const Material& m) { return m.name == name; });
+  return it == scene.materials.end() ? nullptr : &*it;
+}
+
+}  // namespace mpfd::config

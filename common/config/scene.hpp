@@ -1,0 +1,185 @@
+#pragma once
+// The typed scene: what a scene file (YAML) describes, after validation. Plain
+// aggregates in SI units (m, kg, s, Pa, J/kg); nothing of YAML leaks out. The
+// defaults below are the scene file's defaults (the schema reference prints
+// them from here). Load one with load_scene() (scene_loader.hpp).
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "common/config/shapes.hpp"
+#include "common/eos/any_eos.hpp"
+
+namespace mpfd::config {
+
+struct TimeControl {
+  double end = 0.0;         ///< end time [s]
+  double cfl = 0.5;         ///< Courant number of both solvers [-], in (0, 1]
+  int max_steps = 1000000;  ///< the run stops with an error after this many steps
+};
+
+struct Domain {
+  Vec3 lower{};                       ///< [m]
+  Vec3 upper{};                       ///< [m], > lower on every axis
+  std::array<int, 3> cells{1, 1, 1};  ///< cells per axis; an unused axis has one cell
+};
+
+struct Zone {
+  Vec3 lower{};  ///< [m], on a grid line
+  Vec3 upper{};  ///< [m], on a grid line
+};
+
+struct MpmZone {
+  Vec3 lower{};                               ///< [m], on a grid line
+  Vec3 upper{};                               ///< [m], on a grid line
+  std::optional<double> activation_pressure;  ///< [Pa]; dormant until exceeded; absent: always on
+};
+
+/// Where each solver works (CFDMP, T §4.2). Absent from a scene: one solver owns the domain.
+struct Zones {
+  std::optional<Zone> fdm;
+  std::optional<MpmZone> mpm;
+  int handshake_width = 5;  ///< overlap of the FDM and MPM zones [cells], T §4.2
+};
+
+struct NoStrength {};
+
+struct ElasticStrength {
+  double shear_modulus = 0.0;  ///< [Pa]
+};
+
+/// Johnson-Cook flow stress, T (2-64):
+/// sigma_y = (A + B eps_p^n)(1 + C ln(epsdot/epsdot0))(1 - T*^m), T* = (T - T_room)/(T_melt -
+/// T_room).
+struct JohnsonCook {
+  double a = 0.0;                      ///< A [Pa]
+  double b = 0.0;                      ///< B [Pa]
+  double n = 0.0;                      ///< [-]
+  double c = 0.0;                      ///< C [-]
+  double m = 0.0;                      ///< [-]
+  double room_temperature = 293.0;     ///< T_room [K]
+  double melt_temperature = 0.0;       ///< T_melt [K]
+  double reference_strain_rate = 1.0;  ///< epsdot0 [1/s]
+  double specific_heat = 0.0;          ///< [J/(kg K)], for the adiabatic temperature rise
+  double shear_modulus = 0.0;          ///< [Pa]
+};
+
+using AnyStrength = std::variant<NoStrength, ElasticStrength, JohnsonCook>;
+
+struct Explosive {
+  double detonation_velocity = 0.0;  ///< D [m/s], program burn T (3-1)
+};
+
+struct Material {
+  std::string name;
+  eos::AnyEos eos;
+  AnyStrength strength;
+  std::optional<Explosive> explosive;  ///< present for materials that detonate
+};
+
+/// A material's thermodynamic and kinetic state; exactly one of pressure and
+/// specific_internal_energy is set.
+struct MaterialState {
+  std::string material;                            ///< a name in Scene::materials
+  double density = 0.0;                            ///< [kg/m^3]
+  Vec3 velocity{};                                 ///< [m/s]
+  std::optional<double> pressure;                  ///< [Pa]
+  std::optional<double> specific_internal_energy;  ///< [J/kg]
+};
+
+/// A region of the domain filled with one material; later bodies overwrite earlier ones.
+struct Body {
+  std::string name;
+  Shape shape;
+  MaterialState state;
+  int particles_per_axis = 2;  ///< MPM particles per cell along each active axis
+};
+
+enum class Burn { program, instantaneous };
+
+/// Unreacted explosive at its reference density; its material has an `explosive` section.
+struct Charge {
+  std::string name;
+  std::string material;
+  Shape shape;
+  std::optional<Vec3> detonation_point;  ///< [m]; required for program burn
+  Burn burn = Burn::program;
+  int particles_per_axis = 2;
+};
+
+enum class BoundaryKind { outflow, wall, symmetry };
+enum class Face : std::size_t { x_lower, x_upper, y_lower, y_upper, z_lower, z_upper };
+
+struct Boundaries {
+  std::array<BoundaryKind, 6> faces{};  ///< indexed by Face; default outflow everywhere
+
+  BoundaryKind operator[](Face f) const { return faces[static_cast<std::size_t>(f)]; }
+};
+
+struct Gauge {
+  std::string name;
+  Vec3 position{};  ///< [m], inside the domain
+};
+
+/// Cell fields a snapshot may hold (docs/output.md).
+enum class Field {
+  density,
+  velocity,
+  pressure,
+  specific_internal_energy,
+  sound_speed,
+  material,
+  volume_fraction,
+  burn_fraction
+};
+
+struct Output {
+  double interval = 0.0;  ///< time between field snapshots [s]
+  std::vector<Field> fields{Field::density, Field::velocity, Field::pressure};
+  std::optional<double> gauge_interval;  ///< time between gauge samples [s]; absent: every step
+};
+
+enum class Method { fdm, mpm, cfdmp, afdmp };
+enum class ShapeFunction { linear, gimp };
+enum class MpmUpdate { musl, usl };
+
+struct FdmOptions {
+  double artificial_viscosity =
+      1.0;  ///< coefficient of the adaptive viscosity, T (2-56)-(2-58) [-]
+};
+
+struct MpmOptions {
+  ShapeFunction shape_function = ShapeFunction::linear;
+  MpmUpdate update = MpmUpdate::musl;
+};
+
+struct Solver {
+  Method method = Method::fdm;
+  FdmOptions fdm;
+  MpmOptions mpm;
+};
+
+struct Scene {
+  std::string name;
+  TimeControl time;
+  Domain domain;
+  std::optional<Zones> zones;
+  std::vector<Material> materials;
+  MaterialState initial;  ///< background fill of the whole domain
+  std::vector<Body> bodies;
+  std::vector<Charge> charges;
+  Boundaries boundaries;
+  std::vector<Gauge> gauges;
+  Output output;
+  Solver solver;
+};
+
+/// The material called `name`, or nullptr.
+const Material* find_material(const Scene& scene, std::string_view name);
+
+}  // namespace mpfd::config

@@ -1,0 +1,237 @@
+#include "common/config/scene_schema.hpp"
+
+#include <functional>
+#include <memory>
+
+namespace mpfd::config::schema {
+namespace {
+
+template <class T>
+std::shared_ptr<Table<T>> table(std::string title, std::string doc) {
+  return std::make_shared<Table<T>>(std::move(title), std::move(doc));
+}
+
+const Fixed<Number, 3> kPoint{Number("m")};
+const Integer kParticlesPerAxis{Range::closed(1, 8)};
+
+std::shared_ptr<const Table<TimeControl>> time_table() {
+  auto t = table<TimeControl>("time", "When the run ends and how big its steps may be.");
+  t->required("end", &TimeControl::end, Number("s", Range::above(0)), "end time")
+      .optional("cfl", &TimeControl::cfl, Number("-", Range::open_closed(0, 1)),
+                "Courant number of both solvers")
+      .optional("max_steps", &TimeControl::max_steps, Integer(Range::at_least(1)),
+                "the run stops with an error after this many steps");
+  return t;
+}
+
+std::shared_ptr<const Table<Domain>> domain_table() {
+  auto t = table<Domain>("domain",
+                         "The box that holds everything, and its uniform grid (cell size "
+                         "(upper - lower) / cells). A 1D or 2D scene has one cell on its unused "
+                         "axes.");
+  t->required("lower", &Domain::lower, kPoint, "lowest corner")
+      .required("upper", &Domain::upper, kPoint, "highest corner")
+      .required("cells", &Domain::cells, Fixed<Integer, 3>(Integer(Range::at_least(1))),
+                "cells along x, y, z")
+      .rule("upper > lower on every axis",
+            [](const Domain& d, const Cursor& c) { check_box(d.lower, d.upper, c); });
+  return t;
+}
+
+std::shared_ptr<const Table<Zones>> zones_table() {
+  auto fdm = table<Zone>("zones.fdm", "The FDM (Euler) zone.");
+  fdm->required("lower", &Zone::lower, kPoint, "lowest corner, on a grid line")
+      .required("upper", &Zone::upper, kPoint, "highest corner, on a grid line")
+      .rule("upper > lower on every axis",
+            [](const Zone& z, const Cursor& c) { check_box(z.lower, z.upper, c); });
+  auto mpm = table<MpmZone>("zones.mpm", "The MPM (fluid-structure interaction) zone.");
+  mpm->required("lower", &MpmZone::lower, kPoint, "lowest corner, on a grid line")
+      .required("upper", &MpmZone::upper, kPoint, "highest corner, on a grid line")
+      .optional("activation_pressure", &MpmZone::activation_pressure,
+                Number("Pa", Range::at_least(0)),
+                "the zone stays dormant until the pressure at its boundary exceeds this; absent: "
+                "active from the start")
+      .rule("upper > lower on every axis",
+            [](const MpmZone& z, const Cursor& c) { check_box(z.lower, z.upper, c); });
+  auto t = table<Zones>("zones",
+                        "Where each solver works when they are coupled in space (CFDMP, T §4.2). "
+                        "Used only by solver.method cfdmp (both zones required) and afdmp (mpm "
+                        "zone only: the FSI zone).");
+  t->optional("fdm", &Zones::fdm, Nested<Zone>(fdm), "the FDM zone")
+      .optional("mpm", &Zones::mpm, Nested<MpmZone>(mpm), "the MPM zone")
+      .optional("handshake_width", &Zones::handshake_width, Integer(Range::at_least(1)),
+                "overlap of the two zones [cells] on every active axis")
+      .rule("at least one of fdm and mpm", [](const Zones& z, const Cursor& c) {
+        if (!z.fdm && !z.mpm) c.error("expected at least one of the keys fdm and mpm");
+      });
+  return t;
+}
+
+// The keys of a material state, shared by `initial` and `bodies`; `state`
+// maps the table's struct to its MaterialState.
+template <class T, class Get>
+void add_state_keys(Table<T>& t, Get state) {
+  auto member = [state](auto field) {
+    return [ state, field ](T & x) -> auto& {
+      return std::invoke(field, std::invoke(state, x));
+    };
+  };
+  t.required("material", member(&MaterialState::material), Name{}, "a key of `materials`")
+      .required("density", member(&MaterialState::density), Number("kg/m^3", Range::above(0)),
+                "density")
+      .optional("velocity", member(&MaterialState::velocity), Fixed<Number, 3>(Number("m/s")),
+                "velocity")
+      .optional("pressure", member(&MaterialState::pressure), Number("Pa", Range::at_least(0)),
+                "pressure; give this or specific_internal_energy")
+      .optional("specific_internal_energy", member(&MaterialState::specific_internal_energy),
+                Number("J/kg", Range::at_least(0)),
+                "specific internal energy; give this or pressure")
+      .rule("exactly one of pressure and specific_internal_energy",
+            [state](const T& x, const Cursor& c) {
+              const MaterialState& s = std::invoke(state, x);
+              if (s.pressure.has_value() == s.specific_internal_energy.has_value()) {
+                c.error("expected exactly one of the keys pressure and specific_internal_energy");
+              }
+            });
+}
+
+std::shared_ptr<const Table<MaterialState>> initial_table() {
+  auto t = table<MaterialState>("initial", "The background state that fills the whole domain.");
+  add_state_keys(
+      *t, [](auto& s) -> auto& { return s; });
+  return t;
+}
+
+std::shared_ptr<const Table<Body>> body_table() {
+  auto t = table<Body>("bodies[]",
+                       "A region filled with one material, over the background and the bodies "
+                       "before it.");
+  t->required("name", &Body::name, Name{}, "unique among bodies and charges")
+      .required("shape", &Body::shape, ShapeType{}, "the region");
+  add_state_keys(
+      *t, [](auto& b) -> auto& { return b.state; });
+  t->optional("particles_per_axis", &Body::particles_per_axis, kParticlesPerAxis,
+              "MPM particles per cell along each active axis (2 gives 2, 4 and 8 particles per "
+              "cell in 1D, 2D and 3D)");
+  return t;
+}
+
+std::shared_ptr<const Table<Charge>> charge_table() {
+  auto t = table<Charge>("charges[]",
+                         "Unreacted explosive at its material's rho0, filled over the bodies.");
+  t->required("name", &Charge::name, Name{}, "unique among bodies and charges")
+      .required("material", &Charge::material, Name{}, "a material with an `explosive` section")
+      .required("shape", &Charge::shape, ShapeType{}, "the region")
+      .optional("detonation_point", &Charge::detonation_point, kPoint,
+                "where the program burn starts; required for burn: program, not allowed "
+                "otherwise")
+      .optional("burn", &Charge::burn,
+                Enum<Burn>({{"program", Burn::program}, {"instantaneous", Burn::instantaneous}}),
+                "program: ignition at distance / D from the detonation point, T (3-1), (3-2); "
+                "instantaneous: all at t = 0")
+      .optional("particles_per_axis", &Charge::particles_per_axis, kParticlesPerAxis,
+                "MPM particles per cell along each active axis");
+  return t;
+}
+
+std::shared_ptr<const Table<Boundaries>> boundaries_table() {
+  auto t = table<Boundaries>("boundaries",
+                             "The condition on each face of the domain. outflow: zero-gradient, "
+                             "open; wall: rigid, reflecting; symmetry: mirror plane.");
+  const Enum<BoundaryKind> kind({{"outflow", BoundaryKind::outflow},
+                                 {"wall", BoundaryKind::wall},
+                                 {"symmetry", BoundaryKind::symmetry}});
+  const char* axes[] = {"x", "y", "z"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    const std::string axis = axes[i / 2];
+    const std::string side = i % 2 == 0 ? "lower" : "upper";
+    t->optional(
+        axis + "_" + side, [i](Boundaries& b) -> BoundaryKind& { return b.faces[i]; }, kind,
+        "the face at " + axis + " = domain." + side + "[" + std::to_string(i / 2) + "]");
+  }
+  return t;
+}
+
+std::shared_ptr<const Table<Gauge>> gauge_table() {
+  auto t = table<Gauge>("gauges[]", "A named point whose history is recorded.");
+  t->required("name", &Gauge::name, Name{}, "unique among gauges")
+      .required("position", &Gauge::position, kPoint, "inside the domain");
+  return t;
+}
+
+std::shared_ptr<const Table<Output>> output_table() {
+  auto t = table<Output>("output", "What is written and how often.");
+  const Enum<Field> field({{"density", Field::density},
+                           {"velocity", Field::velocity},
+                           {"pressure", Field::pressure},
+                           {"specific_internal_energy", Field::specific_internal_energy},
+                           {"sound_speed", Field::sound_speed},
+                           {"material", Field::material},
+                           {"volume_fraction", Field::volume_fraction},
+                           {"burn_fraction", Field::burn_fraction}});
+  t->required("interval", &Output::interval, Number("s", Range::above(0)),
+              "time between field snapshots")
+      .optional("fields", &Output::fields, ListOf<Enum<Field>>(field, 1),
+                "cell fields in each snapshot, each named once (docs/output.md)")
+      .optional("gauge_interval", &Output::gauge_interval, Number("s", Range::above(0)),
+                "time between gauge samples; absent: every step");
+  return t;
+}
+
+std::shared_ptr<const Table<Solver>> solver_table() {
+  auto fdm = table<FdmOptions>("solver.fdm", "Options of the Euler solver (T §2.2).");
+  fdm->optional("artificial_viscosity", &FdmOptions::artificial_viscosity,
+                Number("-", Range::at_least(0)),
+                "coefficient of the adaptive artificial viscosity, T (2-56)-(2-58)");
+  auto mpm = table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
+  mpm->optional(
+         "shape_function", &MpmOptions::shape_function,
+         Enum<ShapeFunction>({{"linear", ShapeFunction::linear}, {"gimp", ShapeFunction::gimp}}),
+         "linear: trilinear, T (2-7); gimp: W §2.3")
+      .optional("update", &MpmOptions::update,
+                Enum<MpmUpdate>({{"musl", MpmUpdate::musl}, {"usl", MpmUpdate::usl}}),
+                "musl re-maps particle velocities to the nodes before the strain update, T (2-17)");
+  auto t = table<Solver>("solver", "Which method runs the scene, and its options.");
+  t->optional("method", &Solver::method,
+              Enum<Method>({{"fdm", Method::fdm},
+                            {"mpm", Method::mpm},
+                            {"cfdmp", Method::cfdmp},
+                            {"afdmp", Method::afdmp}}),
+              "fdm or mpm: one solver on the whole domain; cfdmp: coupled in space by `zones`; "
+              "afdmp: alternating in time, T §3.2")
+      .optional("fdm", &Solver::fdm, Nested<FdmOptions>(fdm), "FDM options")
+      .optional("mpm", &Solver::mpm, Nested<MpmOptions>(mpm), "MPM options");
+  return t;
+}
+
+std::shared_ptr<const Table<Scene>> build_scene_table() {
+  auto t = table<Scene>("scene", "The top level of a scene file.");
+  t->required("name", &Scene::name, Name{}, "names the run's output files")
+      .required("time", &Scene::time, Nested<TimeControl>(time_table()), "time control")
+      .required("domain", &Scene::domain, Nested<Domain>(domain_table()), "domain and grid")
+      .optional("zones", &Scene::zones, Nested<Zones>(zones_table()), "solver zones")
+      .required("materials", &Scene::materials,
+                NamedMap<Material>(material_table(), &Material::name), "materials by name")
+      .required("initial", &Scene::initial, Nested<MaterialState>(initial_table()),
+                "background state")
+      .optional("bodies", &Scene::bodies, ListOf<Nested<Body>>(Nested<Body>(body_table())),
+                "material regions, filled in order")
+      .optional("charges", &Scene::charges, ListOf<Nested<Charge>>(Nested<Charge>(charge_table())),
+                "explosive charges")
+      .optional("boundaries", &Scene::boundaries, Nested<Boundaries>(boundaries_table()),
+                "boundary condition per face")
+      .optional("gauges", &Scene::gauges, ListOf<Nested<Gauge>>(Nested<Gauge>(gauge_table())),
+                "recorded points")
+      .required("output", &Scene::output, Nested<Output>(output_table()), "output control")
+      .optional("solver", &Scene::solver, Nested<Solver>(solver_table()), "method and options");
+  return t;
+}
+
+}  // namespace
+
+const Table<Scene>& scene_table() {
+  static const std::shared_ptr<const Table<Scene>> built = build_scene_table();
+  return *built;
+}
+
+}  // namespace mpfd::config::schema
