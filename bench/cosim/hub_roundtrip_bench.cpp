@@ -5,6 +5,8 @@
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <thread>
@@ -103,6 +105,53 @@ void BM_HubStep(benchmark::State& state) {
       benchmark::Counter(one_way, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// Args: transport, payload bytes. Recording's cost measured as a paired
+// comparison: blocks of steps alternate between recorder detached and
+// attached in one session, so machine noise hits both alike. Reports the
+// median per-step time of each and the relative change.
+void BM_RecordingOverhead(benchmark::State& state) {
+  constexpr int kStepsPerBlock = 100;
+  Session session(static_cast<int>(state.range(0)));
+  const std::vector<double> ghost_cells(static_cast<std::size_t>(state.range(1)) / sizeof(double),
+                                        1.225);
+  const auto recording = std::filesystem::temp_directory_path() /
+                         ("mpfd-bench-pair-" + std::to_string(::getpid()) + ".mpfdrec");
+  Recorder recorder(recording);
+  std::vector<double> off_us, on_us;
+  std::uint64_t step = 0;
+  const auto block = [&](bool record) {
+    session.hub().attach_recorder(record ? &recorder : nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < kStepsPerBlock; ++i) {
+      ++step;
+      session.hub().set_clock(step, static_cast<double>(step) * 1e-7);
+      for (const auto& name : solver_names)
+        session.hub().send(name, exchange(ghost_cells, static_cast<double>(step) * 1e-7));
+      auto replies = session.hub().gather(solver_names);
+      benchmark::DoNotOptimize(replies.data());
+    }
+    const std::chrono::duration<double, std::micro> spent = std::chrono::steady_clock::now() - start;
+    (record ? on_us : off_us).push_back(spent.count() / kStepsPerBlock);
+  };
+  for (auto _ : state) {
+    // Alternate which goes first so neither always follows the other.
+    const bool record_first = (off_us.size() % 2) == 1;
+    block(record_first);
+    block(!record_first);
+  }
+  session.hub().attach_recorder(nullptr);
+  recorder.close();
+  std::filesystem::remove(recording);
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double off = median(off_us), on = median(on_us);
+  state.counters["off_us_per_step"] = off;
+  state.counters["on_us_per_step"] = on;
+  state.counters["change_percent"] = 100.0 * (on / off - 1.0);
+}
+
 // Args: transport. One solver streams a 64 MiB field in 4 MiB chunks to the coupler.
 void BM_ChunkedFieldExport(benchmark::State& state) {
   Session session(static_cast<int>(state.range(0)));
@@ -131,6 +180,11 @@ void step_arguments(benchmark::internal::Benchmark* bench) {
 }
 
 BENCHMARK(BM_HubStep)->Apply(step_arguments)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RecordingOverhead)
+    ->ArgNames({"tcp", "bytes"})
+    ->ArgsProduct({{0, 1}, {64, 80'000}})
+    ->Iterations(40)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChunkedFieldExport)
     ->ArgName("tcp")
     ->Arg(0)
