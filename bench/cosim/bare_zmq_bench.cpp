@@ -46,7 +46,8 @@ void BM_BareZmqStep(benchmark::State& state) {
                                : std::string("tcp://127.0.0.1:*"));
   const std::string endpoint = hub.get(zmq::sockopt::last_endpoint);
   std::vector<std::thread> peers;
-  for (const char* id : kPeers) peers.emplace_back(echo_until_stop, std::ref(context), endpoint, id);
+  for (const char* id : kPeers)
+    peers.emplace_back(echo_until_stop, std::ref(context), endpoint, id);
   for (std::size_t i = 0; i < std::size(kPeers); ++i) {
     std::vector<zmq::message_t> ready;
     (void)zmq::recv_multipart(hub, std::back_inserter(ready));

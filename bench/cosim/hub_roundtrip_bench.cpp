@@ -130,7 +130,8 @@ void BM_RecordingOverhead(benchmark::State& state) {
       auto replies = session.hub().gather(solver_names);
       benchmark::DoNotOptimize(replies.data());
     }
-    const std::chrono::duration<double, std::micro> spent = std::chrono::steady_clock::now() - start;
+    const std::chrono::duration<double, std::micro> spent =
+        std::chrono::steady_clock::now() - start;
     (record ? on_us : off_us).push_back(spent.count() / kStepsPerBlock);
   };
   for (auto _ : state) {

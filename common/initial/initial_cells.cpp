@@ -57,14 +57,14 @@ void CellFields::resize(std::size_t cells) {
 }
 
 grid::UniformGrid scene_grid(const config::Scene& scene) {
-  return grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
-                                        scene.domain.cells);
+  return grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper, scene.domain.cells);
 }
 
 CellFields initial_cells(const config::Scene& scene, const grid::UniformGrid& grid) {
   const CellState background = resolve(scene, scene.initial, "initial");
   std::vector<CellState> bodies;
-  for (const auto& b : scene.bodies) bodies.push_back(resolve(scene, b.state, "body '" + b.name + "'"));
+  for (const auto& b : scene.bodies)
+    bodies.push_back(resolve(scene, b.state, "body '" + b.name + "'"));
   std::vector<CellState> charges;
   for (const auto& c : scene.charges) charges.push_back(resolve_charge(scene, c));
 

@@ -1,7 +1,6 @@
 // mpfd_scene: check a scene file, print the scene-file reference, or write a
 // scene's initial state in the documented output layout (docs/output.md).
 #include <CLI/CLI.hpp>
-
 #include <exception>
 #include <iostream>
 
@@ -19,7 +18,8 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "validate a scene and print what it holds");
   check->add_option("scene", scene_file, "scene file (YAML)")->required();
   app.add_subcommand("schema", "print every scene key: type, unit, range, default (Markdown)");
-  auto* init = app.add_subcommand("init", "write the scene's initial state (snapshot 0, gauges, summary)");
+  auto* init =
+      app.add_subcommand("init", "write the scene's initial state (snapshot 0, gauges, summary)");
   init->add_option("scene", scene_file, "scene file (YAML)")->required();
   init->add_option("--out", out_dir, "output folder")->required();
   init->add_flag("--overwrite", overwrite, "reuse a folder that holds an earlier run");

@@ -60,10 +60,12 @@ void describe_scene(const config::Scene& scene, std::ostream& out) {
     out << "    " << m.name << ": eos " << eos::name(m.eos);
     if (const auto* jwl = std::get_if<eos::Jwl>(&m.eos)) {
       const auto cj = eos::chapman_jouguet_state(*jwl);
-      out << " (CJ state: p = " << sci(cj.pressure * 1e-9) << " GPa, D = "
-          << sci(cj.detonation_velocity) << " m/s, rho = " << sci(cj.density) << " kg/m^3)";
+      out << " (CJ state: p = " << sci(cj.pressure * 1e-9)
+          << " GPa, D = " << sci(cj.detonation_velocity) << " m/s, rho = " << sci(cj.density)
+          << " kg/m^3)";
     }
-    if (m.explosive) out << ", detonation velocity " << sci(m.explosive->detonation_velocity) << " m/s";
+    if (m.explosive)
+      out << ", detonation velocity " << sci(m.explosive->detonation_velocity) << " m/s";
     out << "\n";
   }
   out << "  initial: " << scene.initial.material << " at " << sci(scene.initial.density)
@@ -78,7 +80,8 @@ void describe_scene(const config::Scene& scene, std::ostream& out) {
   for (std::size_t f = 0; f < 6; ++f)
     out << " " << kFaceName[f] << "=" << kBoundaryName[static_cast<int>(scene.boundaries.faces[f])];
   out << "\n";
-  for (const auto& g : scene.gauges) out << "  gauge '" << g.name << "' at " << vec(g.position) << " m\n";
+  for (const auto& g : scene.gauges)
+    out << "  gauge '" << g.name << "' at " << vec(g.position) << " m\n";
   out << "  output every " << sci(scene.output.interval) << " s\n";
 }
 
@@ -86,7 +89,8 @@ void write_initial_state(const config::Scene& scene, const std::filesystem::path
                          const std::filesystem::path& out_dir, bool overwrite) {
   const auto start = std::chrono::steady_clock::now();
   const grid::UniformGrid grid = initial::scene_grid(scene);
-  const initial::CellFields cells = initial::initial_cells(scene, grid);  // may throw: nothing written yet
+  const initial::CellFields cells =
+      initial::initial_cells(scene, grid);  // may throw: nothing written yet
   io::prepare_output_directory(out_dir, overwrite);
 
   io::SnapshotWriter snapshots(out_dir, grid);
@@ -111,10 +115,12 @@ void write_initial_state(const config::Scene& scene, const std::filesystem::path
                       cells.velocity_y[n] * cells.velocity_y[n] +
                       cells.velocity_z[n] * cells.velocity_z[n];
     mass += cells.density[n] * grid.cell_volume();
-    energy += cells.density[n] * grid.cell_volume() * (cells.specific_internal_energy[n] + 0.5 * u2);
+    energy +=
+        cells.density[n] * grid.cell_volume() * (cells.specific_internal_energy[n] + 0.5 * u2);
   }
   io::RunSummary summary("mpfd_scene init", scene.name, scene_file);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.set_progress(0, 0.0, scene.time.end, wall);
   summary.set_conservation({{"mass", "kg", mass, mass, 0.0}, {"energy", "J", energy, energy, 0.0}});
   summary.set_detail("cells", grid.cell_count());

@@ -21,10 +21,16 @@ config::Scene tube(config::Burn burn) {
   s.materials = {{"air", eos::IdealGas{1.4}, config::NoStrength{}, std::nullopt},
                  {"tnt", kTnt, config::NoStrength{}, config::Explosive{6930.0}}};
   s.initial = {"air", 1.225, {0, 0, 0}, std::nullopt, 2.0685e5};
-  s.bodies = {{"dense", {config::Box{{0.2, 0, 0}, {0.5, 0.1, 0.1}}},
-               {"air", 12.25, {50.0, 0, 0}, 1.0e6, std::nullopt}, 2}};
-  s.charges = {{"slab", "tnt", {config::Box{{0, 0, 0}, {0.2, 0.1, 0.1}}}, grid::Vec3{0, 0.05, 0.05},
-                burn, 2}};
+  s.bodies = {{"dense",
+               {config::Box{{0.2, 0, 0}, {0.5, 0.1, 0.1}}},
+               {"air", 12.25, {50.0, 0, 0}, 1.0e6, std::nullopt},
+               2}};
+  s.charges = {{"slab",
+                "tnt",
+                {config::Box{{0, 0, 0}, {0.2, 0.1, 0.1}}},
+                grid::Vec3{0, 0.05, 0.05},
+                burn,
+                2}};
   return s;
 }
 
