@@ -1,0 +1,207 @@
+#include "fdm_solver/euler_solver.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "common/core/error.hpp"
+#include "common/initial/initial_cells.hpp"
+#include "fdm_solver/pencil_io.hpp"
+#include "fdm_solver/sweep_kernel.hpp"
+
+namespace mpfd::fdm {
+namespace {
+
+EulerState initial_state(const config::Scene& scene) {
+  const grid::UniformGrid grid = initial::scene_grid(scene);
+  const initial::CellFields f = initial::initial_cells(scene, grid);
+  EulerState s(grid);
+  for (std::size_t n = 0; n < grid.cell_count(); ++n) {
+    const double rho = f.density[n];
+    const double u2 = f.velocity_x[n] * f.velocity_x[n] + f.velocity_y[n] * f.velocity_y[n] +
+                      f.velocity_z[n] * f.velocity_z[n];
+    s.u[kDensity][n] = rho;
+    s.u[kMomentumX][n] = rho * f.velocity_x[n];
+    s.u[kMomentumY][n] = rho * f.velocity_y[n];
+    s.u[kMomentumZ][n] = rho * f.velocity_z[n];
+    s.u[kEnergy][n] = rho * (f.specific_internal_energy[n] + 0.5 * u2);
+    s.material[n] = static_cast<std::uint8_t>(f.material[n]);
+  }
+  return s;
+}
+
+std::string position_text(const grid::Vec3& x) {
+  return "(" + std::to_string(x[0]) + ", " + std::to_string(x[1]) + ", " + std::to_string(x[2]) +
+         ") m";
+}
+
+}  // namespace
+
+EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
+    : state_(initial_state(scene)), boundaries_(scene.boundaries), options_(options) {
+  if (scene.materials.size() > 255) throw Error("fdm_solver: at most 255 materials");
+  for (const auto& m : scene.materials) eos_.push_back(m.eos);
+  const auto& n = state_.grid.cells();
+  const std::size_t longest = static_cast<std::size_t>(std::max({n[0], n[1], n[2]}));
+  pencils_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  for (auto& p : pencils_) p.resize(longest + 2 * kGhost);
+  box_ = options_.skip_quiet ? disturbed_cells(state_, boundaries_) : whole_grid(state_.grid);
+  quiet_flux_ = quiet_face_flux(state_, boundaries_, eos_);
+  initial_line_limit_.resize(static_cast<std::size_t>(n[1]) * n[2]);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)] =
+          line_limit(state_.grid.cell_index(0, j, k));
+}
+
+double EulerSolver::line_limit(std::size_t start) const {
+  // min over the x-line at `start` of dx_a / (|u_a| + c) over active axes.
+  const auto& g = state_.grid;
+  const std::size_t nx = static_cast<std::size_t>(g.cells()[0]);
+  double limit = std::numeric_limits<double>::infinity();
+  for (std::size_t i = start; i < start + nx; ++i) {
+    const double rho = state_.u[kDensity][i];
+    const double m[3] = {state_.u[kMomentumX][i], state_.u[kMomentumY][i], state_.u[kMomentumZ][i]};
+    const double e =
+        (state_.u[kEnergy][i] - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
+    const double c = eos::sound_speed(eos_[state_.material[i]], rho, e);
+    for (int a = 0; a < 3; ++a)
+      if (g.is_active(a)) limit = std::min(limit, g.spacing()[a] / (std::abs(m[a] / rho) + c));
+  }
+  return limit;
+}
+
+double EulerSolver::stable_dt() const {
+  const auto& n = state_.grid.cells();
+  double limit = std::numeric_limits<double>::infinity();
+  // Lines outside the disturbed box are as they started: use their cached limit.
+#pragma omp parallel for collapse(2) reduction(min : limit) schedule(static)
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j) {
+      const bool still = box_.empty() || j < box_.lower[1] || j >= box_.upper[1] ||
+                         k < box_.lower[2] || k >= box_.upper[2];
+      const double line = still ? initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)]
+                                : line_limit(state_.grid.cell_index(0, j, k));
+      limit = std::min(limit, line);
+    }
+  return 2.0 * options_.cfl * limit;
+}
+
+void EulerSolver::advance(double dt) {
+  MPFD_ASSERT(dt > 0.0 && std::isfinite(dt), "time step must be positive and finite");
+  const auto& g = state_.grid;
+  // T (2-52): U^{n+1} = Lz Ly Lx Lx Ly Lz U^n, each over dt/2; the rightmost acts first.
+  for (const int axis : {2, 1, 0, 0, 1, 2})
+    if (g.is_active(axis)) sweep(axis, 0.5 * dt);
+  time_ += dt;
+  ++steps_;
+}
+
+void EulerSolver::sweep(int axis, double dt) {
+  const auto& g = state_.grid;
+  const auto& n = g.cells();
+  if (options_.skip_quiet) box_.grow(axis, static_cast<int>(kGhost), n[axis]);
+  if (box_.empty()) {
+    count_quiet_faces(axis, dt, false, false);
+    return;
+  }
+  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;  // the two other axes
+  const std::size_t stride = g.cell_index(axis == 0, axis == 1, axis == 2);
+  const AxisBoundaries faces{boundaries_[static_cast<config::Face>(2 * axis)],
+                             boundaries_[static_cast<config::Face>(2 * axis + 1)]};
+  const SweepStep step{dt, g.spacing()[axis], options_.viscosity};
+  const double face_area = g.spacing()[a1] * g.spacing()[a2];
+  const std::size_t first = static_cast<std::size_t>(box_.lower[axis]);
+  const std::size_t last = static_cast<std::size_t>(box_.upper[axis]);
+  const bool at_lower = first == 0, at_upper = last == static_cast<std::size_t>(n[axis]);
+  const int lines1 = box_.upper[a1] - box_.lower[a1];
+  const int lines2 = box_.upper[a2] - box_.lower[a2];
+
+  double leaving[kVariables] = {};  // an array, for the OpenMP reduction
+  std::optional<std::pair<grid::Index3, BadCell>> bad;
+#pragma omp parallel reduction(+ : leaving[:kVariables])
+  {
+    Pencil& pencil = pencils_[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for collapse(2) schedule(static)
+    for (int l2 = 0; l2 < lines2; ++l2)
+      for (int l1 = 0; l1 < lines1; ++l1) {
+        grid::Index3 origin{};
+        origin[a1] = box_.lower[a1] + l1;
+        origin[a2] = box_.lower[a2] + l2;
+        const PencilLine line{axis, g.cell_index(origin), stride,
+                              static_cast<std::size_t>(n[axis])};
+        gather(state_, line, faces, first, last, pencil);
+        EndFluxes ends;
+        const auto problem = sweep_pencil(pencil, first + kGhost, last + kGhost, step, eos_, ends);
+        if (problem) {
+#pragma omp critical(mpfd_fdm_bad_cell)
+          if (!bad) {
+            grid::Index3 cell = origin;
+            cell[axis] = static_cast<int>(problem->position - kGhost);
+            bad.emplace(cell, *problem);
+          }
+          continue;
+        }
+        scatter(pencil, line, first, last, state_);
+        // Momentum slots are rotated in the pencil; map them back to x, y, z.
+        for (std::size_t s = 0; s < kVariables; ++s) {
+          std::size_t v = s;
+          if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
+          if (at_lower) leaving[v] -= ends.lower[s] * face_area;
+          if (at_upper) leaving[v] += ends.upper[s] * face_area;
+        }
+      }
+  }
+  if (bad) {
+    const auto& [cell, value] = *bad;
+    throw Error("fdm_solver: unphysical state in cell (" + std::to_string(cell[0]) + ", " +
+                std::to_string(cell[1]) + ", " + std::to_string(cell[2]) + ") at " +
+                position_text(g.cell_center(cell)) + ", t = " + std::to_string(time_) +
+                " s (step " + std::to_string(steps_) + "): density " +
+                std::to_string(value.density) + " kg/m^3, pressure " +
+                std::to_string(value.pressure) +
+                " Pa; both must stay positive. Reduce time.cfl or refine the grid.");
+  }
+  for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[v];
+  count_quiet_faces(axis, dt, at_lower, at_upper);
+  cell_updates_ += static_cast<double>(last - first) * lines1 * lines2;
+}
+
+void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, bool upper_updated) {
+  const auto& g = state_.grid;
+  if (!g.is_active(axis)) return;
+  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+  const double impulse = dt * g.spacing()[a1] * g.spacing()[a2];
+  for (const int side : {0, 1}) {
+    const int face = 2 * axis + side;
+    const bool updated = side == 0 ? lower_updated : upper_updated;
+    const double sign = side == 0 ? -1.0 : 1.0;  // leaving: -x through the lower face
+    for (std::size_t v = 0; v < kVariables; ++v) {
+      double still = quiet_flux_.total[face][v];
+      if (updated)  // the box's lines were counted by the sweep itself
+        for (int l2 = box_.lower[a2]; l2 < box_.upper[a2]; ++l2)
+          for (int l1 = box_.lower[a1]; l1 < box_.upper[a1]; ++l1)
+            still -= quiet_flux_.flux[face][v][static_cast<std::size_t>(l1 + g.cells()[a1] * l2)];
+      outflow_[v] += sign * still * impulse;
+    }
+  }
+}
+
+Totals EulerSolver::totals() const {
+  Totals sum{};
+  const double volume = state_.grid.cell_volume();
+  for (std::size_t v = 0; v < kVariables; ++v) {
+    double s = 0.0;
+    const auto& u = state_.u[v];
+#pragma omp parallel for reduction(+ : s) schedule(static)
+    for (std::size_t i = 0; i < u.size(); ++i) s += u[i];
+    sum[v] = s * volume;
+  }
+  return sum;
+}
+
+}  // namespace mpfd::fdm

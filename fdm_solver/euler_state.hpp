@@ -1,0 +1,30 @@
+#pragma once
+// The conserved state of the Euler equations, T (2-49), (2-50):
+// U = [rho, rho u, rho v, rho w, E] at cell centres, E = rho (e + |u|^2 / 2),
+// one contiguous array per variable (structure of arrays) in the grid's cell
+// order (x fastest). Ghost cells are not stored: each sweep's pencil makes
+// its own from the boundary conditions (pencil_io.hpp).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common/grid/uniform_grid.hpp"
+
+namespace mpfd::fdm {
+
+enum Variable : std::size_t { kDensity = 0, kMomentumX, kMomentumY, kMomentumZ, kEnergy };
+inline constexpr std::size_t kVariables = 5;
+
+struct EulerState {
+  explicit EulerState(const grid::UniformGrid& g) : grid(g), material(g.cell_count(), 0) {
+    for (auto& v : u) v.assign(g.cell_count(), 0.0);
+  }
+
+  grid::UniformGrid grid;
+  std::array<std::vector<double>, kVariables> u;
+  std::vector<std::uint8_t> material;  ///< index into the scene's materials
+};
+
+}  // namespace mpfd::fdm

@@ -1,0 +1,150 @@
+#include "fdm_solver/euler_solver.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/core/error.hpp"
+#include "tests/unit/fdm_solver/fdm_test_scenes.hpp"
+
+namespace mpfd::fdm {
+namespace {
+
+using testing::gas_scene;
+using ::testing::HasSubstr;
+using testing::sod_tube;
+
+void run_steps(EulerSolver& solver, int steps) {
+  for (int s = 0; s < steps; ++s) solver.advance(solver.stable_dt());
+}
+
+TEST(EulerSolver, UniformMovingGasStaysExactlyUniform) {
+  const auto scene =
+      gas_scene("[1, 1, 0.1]", "[16, 16, 1]",
+                "{material: gas, density: 1.2, pressure: 1.0e5, velocity: [100, -50, 0]}");
+  EulerSolver solver(scene, {.skip_quiet = false});
+  const EulerState before = solver.state();
+  run_steps(solver, 20);
+  for (std::size_t v = 0; v < kVariables; ++v) EXPECT_EQ(solver.state().u[v], before.u[v]) << v;
+}
+
+TEST(EulerSolver, ClosedBoxConservesMassAndEnergyToRoundOffOver1000Steps) {
+  const auto scene =
+      gas_scene("[1, 1, 0.1]", "[24, 24, 1]", "{material: gas, density: 1.0, pressure: 1.0e5}",
+                "bodies:\n  - {name: hot, material: gas, density: 2.0, pressure: 1.0e6,\n"
+                "     shape: {box: {lower: [0.3, 0.2, 0], upper: [0.6, 0.5, 0.1]}}}\n"
+                "boundaries: {x_lower: wall, x_upper: wall, y_lower: wall, y_upper: wall}\n");
+  EulerSolver solver(scene, {});
+  const Totals start = solver.totals();
+  run_steps(solver, 1000);
+  const Totals end = solver.totals();
+  // 1000 steps x 4 sweeps of sums over 576 cells: round-off is ~1e-13 relative.
+  EXPECT_NEAR(end[kDensity] / start[kDensity], 1.0, 1e-12);
+  EXPECT_NEAR(end[kEnergy] / start[kEnergy], 1.0, 1e-12);
+  // Walls pass no mass: only round-off of the mirrored viscous exchange.
+  EXPECT_NEAR(solver.outflow()[kDensity], 0.0, 1e-15 * start[kDensity]);
+  // Momentum changes only by the walls' impulse, which the audit counts.
+  const double scale = std::sqrt(start[kDensity] * start[kEnergy]);
+  for (const std::size_t v : {kMomentumX, kMomentumY})
+    EXPECT_NEAR(end[v] + solver.outflow()[v] - start[v], 0.0, 1e-12 * scale) << v;
+}
+
+TEST(EulerSolver, OpenTubeAuditBalancesWhatLeftThroughTheEnds) {
+  auto scene = sod_tube(0, 100);
+  EulerSolver solver(scene, {});
+  const Totals start = solver.totals();
+  while (solver.time() < 1.0) solver.advance(solver.stable_dt());  // waves have left
+  const Totals end = solver.totals();
+  EXPECT_GT(solver.outflow()[kDensity], 0.01 * start[kDensity]);
+  for (const std::size_t v : {kDensity, kEnergy})
+    EXPECT_NEAR((end[v] + solver.outflow()[v]) / start[v], 1.0, 1e-13) << v;
+}
+
+TEST(EulerSolver, SodAlongXYZGivesTheSameProfileBitForBit) {
+  std::vector<double> profiles[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    EulerSolver solver(sod_tube(axis, 100), {});
+    while (solver.time() < 0.2) solver.advance(std::min(solver.stable_dt(), 0.2 - solver.time()));
+    profiles[axis] = solver.state().u[kDensity];
+  }
+  EXPECT_EQ(profiles[1], profiles[0]);
+  EXPECT_EQ(profiles[2], profiles[0]);
+}
+
+TEST(EulerSolver, SodAsA3DSceneMatchesThe1DRunInEveryLine) {
+  EulerSolver line(sod_tube(0, 100), {});
+  const auto box = gas_scene(
+      "[1, 1, 1]", "[100, 4, 4]", "{material: gas, density: 0.125, pressure: 0.1}",
+      "bodies:\n  - {name: left, material: gas, density: 1.0, pressure: 1.0,\n"
+      "     shape: {box: {lower: [0, 0, 0], upper: [0.5, 1, 1]}}}\n"
+      "boundaries: {y_lower: symmetry, y_upper: wall, z_lower: symmetry, z_upper: outflow}\n");
+  EulerSolver volume(box, {});
+  for (int s = 0; s < 60; ++s) {
+    const double dt = line.stable_dt();
+    ASSERT_EQ(volume.stable_dt(), dt);  // dy = dz = 0.25 m never limit the step
+    line.advance(dt);
+    volume.advance(dt);
+  }
+  const auto& g = volume.state().grid;
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 100; ++i)
+        ASSERT_EQ(volume.state().u[kDensity][g.cell_index(i, j, k)],
+                  line.state().u[kDensity][static_cast<std::size_t>(i)])
+            << i << " " << j << " " << k;
+}
+
+TEST(EulerSolver, UpdatingOnlyTheDisturbedRegionIsBitwiseTheFullUpdate) {
+  const auto scene =
+      gas_scene("[1, 1, 1]", "[24, 24, 24]", "{material: gas, density: 1.2, pressure: 1.0e5}",
+                "bodies:\n  - {name: ball, material: gas, density: 5.0, pressure: 2.0e6,\n"
+                "     shape: {sphere: {center: [0.3, 0.45, 0.5], radius: 0.12}}}\n"
+                "boundaries: {x_lower: wall, y_lower: symmetry}\n");
+  EulerSolver full(scene, {.skip_quiet = false});
+  EulerSolver skipping(scene, {.skip_quiet = true});
+  for (int s = 0; s < 25; ++s) {
+    const double dt = full.stable_dt();
+    ASSERT_EQ(skipping.stable_dt(), dt) << "step " << s;
+    full.advance(dt);
+    skipping.advance(dt);
+    if (s == 1) {
+      EXPECT_LT(skipping.active_box().cells(), 24 * 24 * 24);  // it does skip
+    }
+  }
+  for (std::size_t v = 0; v < kVariables; ++v)
+    EXPECT_EQ(skipping.state().u[v], full.state().u[v]) << "variable " << v;
+  EXPECT_LT(skipping.cell_updates(), full.cell_updates());
+}
+
+TEST(EulerSolver, AQuietSceneCostsNothing) {
+  const auto scene =
+      gas_scene("[1, 1, 1]", "[20, 20, 20]", "{material: gas, density: 1.2, pressure: 1.0e5}");
+  EulerSolver solver(scene, {});
+  run_steps(solver, 5);
+  EXPECT_TRUE(solver.active_box().empty());
+  EXPECT_EQ(solver.cell_updates(), 0.0);
+}
+
+TEST(EulerSolver, VacuumFormationStopsWithTheCellTimeAndValues) {
+  // Two streams leaving each other at 15 Mach: the gap empties faster than
+  // any positive state can follow.
+  const auto scene =
+      gas_scene("[1, 0.1, 0.1]", "[50, 1, 1]",
+                "{material: gas, density: 1.0, pressure: 1.0e5, velocity: [5000, 0, 0]}",
+                "bodies:\n  - {name: left, material: gas, density: 1.0, pressure: 1.0e5, velocity: "
+                "[-5000, 0, 0],\n"
+                "     shape: {box: {lower: [0, 0, 0], upper: [0.5, 0.1, 0.1]}}}\n");
+  EulerSolver solver(scene, {});
+  try {
+    run_steps(solver, 200);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("unphysical state in cell ("));
+    EXPECT_THAT(e.what(), HasSubstr(", t = "));
+    EXPECT_THAT(e.what(), HasSubstr("pressure"));
+  }
+}
+
+}  // namespace
+}  // namespace mpfd::fdm
