@@ -34,6 +34,11 @@ EulerState initial_state(const config::Scene& scene) {
   return s;
 }
 
+/// Below this many cells a loop runs on one thread: starting a team costs
+/// more than it saves, and on a loaded machine a descheduled thread stalls
+/// the barrier for a whole time slice.
+constexpr long long kParallelCells = 32768;
+
 std::string position_text(const grid::Vec3& x) {
   return "(" + std::to_string(x[0]) + ", " + std::to_string(x[1]) + ", " + std::to_string(x[2]) +
          ") m";
@@ -79,7 +84,9 @@ double EulerSolver::stable_dt() const {
   const auto& n = state_.grid.cells();
   double limit = std::numeric_limits<double>::infinity();
   // Lines outside the disturbed box are as they started: use their cached limit.
-#pragma omp parallel for collapse(2) reduction(min : limit) schedule(static)
+#pragma omp parallel for collapse(2) reduction(min      \
+                                               : limit) \
+    schedule(static) if (state_.grid.cell_count() >= kParallelCells)
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j) {
       const bool still = box_.empty() || j < box_.lower[1] || j >= box_.upper[1] ||
@@ -123,7 +130,8 @@ void EulerSolver::sweep(int axis, double dt) {
 
   double leaving[kVariables] = {};  // an array, for the OpenMP reduction
   std::optional<std::pair<grid::Index3, BadCell>> bad;
-#pragma omp parallel reduction(+ : leaving[:kVariables])
+  const long long work = static_cast<long long>(last - first) * lines1 * lines2;
+#pragma omp parallel reduction(+ : leaving[:kVariables]) if (work >= kParallelCells)
   {
     Pencil& pencil = pencils_[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for collapse(2) schedule(static)
@@ -197,7 +205,7 @@ Totals EulerSolver::totals() const {
   for (std::size_t v = 0; v < kVariables; ++v) {
     double s = 0.0;
     const auto& u = state_.u[v];
-#pragma omp parallel for reduction(+ : s) schedule(static)
+#pragma omp parallel for reduction(+ : s) schedule(static) if (u.size() >= kParallelCells)
     for (std::size_t i = 0; i < u.size(); ++i) s += u[i];
     sum[v] = s * volume;
   }

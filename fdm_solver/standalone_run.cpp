@@ -1,0 +1,182 @@
+#include "fdm_solver/standalone_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <string>
+
+#include "common/core/error.hpp"
+#include "common/core/log.hpp"
+#include "common/core/progress.hpp"
+#include "common/io/gauge_recorder.hpp"
+#include "common/io/output_directory.hpp"
+#include "common/io/run_summary.hpp"
+#include "common/io/snapshot_writer.hpp"
+#include "fdm_solver/primitive_fields.hpp"
+
+namespace mpfd::fdm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The snapshot's cell fields, as the scene asks for them (docs/output.md).
+std::vector<io::FieldView> field_views(const config::Scene& scene, const EulerState& state,
+                                       const PrimitiveFields& p) {
+  std::vector<io::FieldView> views;
+  for (const auto field : scene.output.fields) {
+    switch (field) {
+      case config::Field::density:
+        views.push_back({"density", "kg/m^3", {state.u[kDensity]}});
+        break;
+      case config::Field::velocity:
+        views.push_back({"velocity", "m/s", {p.velocity_x, p.velocity_y, p.velocity_z}});
+        break;
+      case config::Field::pressure:
+        views.push_back({"pressure", "Pa", {p.pressure}});
+        break;
+      case config::Field::specific_internal_energy:
+        views.push_back({"specific_internal_energy", "J/kg", {p.specific_internal_energy}});
+        break;
+      case config::Field::sound_speed:
+        views.push_back({"sound_speed", "m/s", {p.sound_speed}});
+        break;
+      case config::Field::material:
+        views.push_back({"material", "", {p.material}});
+        break;
+      case config::Field::volume_fraction:
+      case config::Field::burn_fraction:
+        throw Error("scene '" + scene.name +
+                    "': output.fields: fdm_solver does not yet write volume_fraction or "
+                    "burn_fraction (multi-material tracers are not integrated); remove them");
+    }
+  }
+  return views;
+}
+
+constexpr const char* kAuditName[kVariables] = {"mass", "momentum_x", "momentum_y", "momentum_z",
+                                                "energy"};
+constexpr const char* kAuditUnits[kVariables] = {"kg", "kg m/s", "kg m/s", "kg m/s", "J"};
+
+}  // namespace
+
+void run_standalone(const config::Scene& scene, const RunOptions& options) {
+  const Logger logger("fdm.run");
+  EulerSolver solver(scene, {.cfl = scene.time.cfl,
+                             .viscosity = scene.solver.fdm.artificial_viscosity,
+                             .skip_quiet = options.skip_quiet});
+  PrimitiveFields primitives;
+  primitives.compute(solver.state(), solver.materials());
+  (void)field_views(scene, solver.state(), primitives);  // refuse unsupported fields up front
+  io::prepare_output_directory(options.out_dir, options.overwrite);
+
+  const auto& grid = solver.state().grid;
+  io::RunSummary summary("fdm_solver run", scene.name, options.scene_file);
+  io::SnapshotWriter snapshots(options.out_dir, grid);
+  std::vector<io::GaugePoint> points;
+  std::vector<std::size_t> gauge_cells;
+  for (const auto& g : scene.gauges) {
+    points.push_back({g.name, g.position});
+    const auto where = grid.locate(g.position);
+    if (!where)
+      throw Error("scene '" + scene.name + "': gauge '" + g.name + "' is outside the grid");
+    gauge_cells.push_back(grid.cell_index(where->cell));
+  }
+  io::GaugeRecorder gauges(options.out_dir, points,
+                           {{"density", "kg/m^3"},
+                            {"pressure", "Pa"},
+                            {"velocity_x", "m/s"},
+                            {"velocity_y", "m/s"},
+                            {"velocity_z", "m/s"}});
+  std::vector<double> sample(5 * gauge_cells.size());
+  const auto record_gauges = [&] {
+    // Gauges read the cell that holds them; only their cells need primitives.
+    const auto& u = solver.state().u;
+    for (std::size_t g = 0; g < gauge_cells.size(); ++g) {
+      const std::size_t c = gauge_cells[g];
+      const double rho = u[kDensity][c];
+      const double v[3] = {u[kMomentumX][c] / rho, u[kMomentumY][c] / rho, u[kMomentumZ][c] / rho};
+      const double e = u[kEnergy][c] / rho - 0.5 * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      const double p = eos::pressure(solver.materials()[solver.state().material[c]], rho, e);
+      const double values[5] = {rho, p, v[0], v[1], v[2]};
+      std::copy(values, values + 5, sample.begin() + static_cast<std::ptrdiff_t>(5 * g));
+    }
+    gauges.record(solver.time(), sample);
+  };
+
+  const Totals initial = solver.totals();
+  const double momentum_scale = std::sqrt(2.0 * initial[kDensity] * initial[kEnergy]);
+  const auto start = Clock::now();
+  double solver_seconds = 0.0;
+  const auto write_summary = [&](const std::string& status, const std::string& error) {
+    const Totals now = solver.totals();
+    std::vector<io::ConservationEntry> audit;
+    for (std::size_t v = 0; v < kVariables; ++v)
+      audit.push_back({kAuditName[v], kAuditUnits[v], initial[v], now[v], solver.outflow()[v]});
+    summary.set_conservation(audit, momentum_scale);
+    summary.set_detail("audit_scale",
+                       {{"value", momentum_scale},
+                        {"meaning", "sqrt(2 M E): momentum errors are relative to it"}});
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    summary.set_progress(solver.steps(), solver.time(), scene.time.end, wall);
+    summary.set_rate("cell_updates_per_second",
+                     solver_seconds > 0 ? solver.cell_updates() / solver_seconds : 0.0);
+    summary.set_detail("cells", grid.cell_count());
+    summary.set_detail("solver_time_s", solver_seconds);
+    summary.set_detail("cell_updates", solver.cell_updates());
+    summary.set_status(status, error);
+    summary.write(options.out_dir / "summary.json");
+  };
+  const auto write_output = [&] {
+    primitives.compute(solver.state(), solver.materials());
+    snapshots.write(solver.steps(), solver.time(), field_views(scene, solver.state(), primitives));
+    gauges.flush();
+    write_summary("running", "");
+  };
+
+  try {
+    ProgressLine progress(std::cerr, scene.time.end, "fdm");
+    const double end = scene.time.end;
+    double next_output = 0.0;
+    double next_gauge = 0.0;
+    while (true) {
+      if (!scene.output.gauge_interval || solver.time() >= next_gauge) {
+        record_gauges();
+        if (scene.output.gauge_interval)
+          while (next_gauge <= solver.time()) next_gauge += *scene.output.gauge_interval;
+      }
+      if (solver.time() >= next_output || solver.time() >= end) {
+        write_output();
+        while (next_output <= solver.time()) next_output += scene.output.interval;
+      }
+      if (solver.time() >= end) break;
+      if (solver.steps() >= scene.time.max_steps)
+        throw Error("fdm_solver: reached time.max_steps = " + std::to_string(scene.time.max_steps) +
+                    " at t = " + std::to_string(solver.time()) + " s of " + std::to_string(end) +
+                    " s; raise time.max_steps or coarsen the grid");
+      // Land exactly on output and end times; never leave a sliver of a step.
+      double dt = solver.stable_dt();
+      const double left = std::min(next_output, end) - solver.time();
+      if (left <= dt)
+        dt = left;
+      else if (left < 2.0 * dt)
+        dt = 0.5 * left;
+      const auto step_start = Clock::now();
+      solver.advance(dt);
+      solver_seconds += std::chrono::duration<double>(Clock::now() - step_start).count();
+      progress.update(solver.steps(), solver.time());
+    }
+    progress.finish(solver.steps(), solver.time());
+    write_summary("completed", "");
+  } catch (const Error& e) {
+    gauges.flush();
+    write_summary("failed", e.what());
+    throw;
+  }
+  logger.info("'", scene.name, "' done: ", solver.steps(), " steps to t = ", solver.time(), " s, ",
+              solver.cell_updates() / std::max(solver_seconds, 1e-12) / 1e6,
+              " M cell-updates/s; output in ", options.out_dir.string());
+}
+
+}  // namespace mpfd::fdm
