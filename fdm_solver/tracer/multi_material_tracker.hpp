@@ -1,0 +1,62 @@
+#pragma once
+// The FDM solver's multi-material step (T §3.2.2, §3.3) in two calls:
+//   1. advect(v^n, dt, faces), before or after the sweeps but with the
+//      velocities of time level n: tracers move (3-9)-(3-13), are binned,
+//      cells are classified with theta_r (3-23), and each tracer gets the
+//      volume it carries into the next step (3-21), (3-22);
+//   2. update_pressure(rho, e, p) with the cell density and specific internal
+//      energy after the sweeps: the cell pressure, single-material cells from
+//      their EOS, mixed cells from the closure (3-24)-(3-28).
+// Call each exactly once per step, in this order; update_pressure right after
+// construction gives the initial pressure. Fields are plain arrays in the
+// grid's cell order (x fastest, no ghost cells).
+
+#include <span>
+#include <vector>
+
+#include "common/eos/any_eos.hpp"
+#include "common/grid/uniform_grid.hpp"
+#include "fdm_solver/tracer/material_map.hpp"
+#include "fdm_solver/tracer/material_states.hpp"
+#include "fdm_solver/tracer/tracer_advection.hpp"
+#include "fdm_solver/tracer/tracer_bins.hpp"
+#include "fdm_solver/tracer/tracer_set.hpp"
+
+namespace mpfd::fdm {
+
+class MultiMaterialTracker {
+ public:
+  /// `materials[r]` is the EOS of material index r (the scene's material
+  /// order); `cell_material`, `density` [kg/m^3] and `energy` [J/kg] are the
+  /// initial cell fields. Seeds tracers_per_axis^d tracers per cell. Throws
+  /// mpfd::Error on a size mismatch, an invalid EOS or a material index
+  /// without an EOS.
+  MultiMaterialTracker(const grid::UniformGrid& grid, std::vector<eos::AnyEos> materials,
+                       std::span<const double> cell_material, std::span<const double> density,
+                       std::span<const double> energy, int tracers_per_axis);
+
+  /// Step part 1; see the file comment.
+  AdvectionReport advect(const VelocityView& velocity, double dt, const TracerBoundaries& faces);
+  /// Step part 2: writes the cell pressure [Pa]; see the file comment.
+  ClosureReport update_pressure(std::span<const double> density, std::span<const double> energy,
+                                std::span<double> pressure);
+
+  [[nodiscard]] const TracerSet& tracers() const { return tracers_; }
+  [[nodiscard]] const TracerBins& bins() const { return bins_; }
+  /// Classification and theta_r after the last advect().
+  [[nodiscard]] const MaterialMap& materials() const { return current_; }
+  /// e_r, rho_r and closure status after the last update_pressure().
+  [[nodiscard]] const MaterialStates& states() const { return states_; }
+
+ private:
+  grid::UniformGrid grid_;
+  std::vector<eos::AnyEos> eos_;
+  TracerSet tracers_;
+  TracerBins bins_;
+  MaterialMap previous_;  // at the last update_pressure()
+  MaterialMap current_;
+  MaterialMap next_;  // classify_cells output, swapped with current_
+  MaterialStates states_;
+};
+
+}  // namespace mpfd::fdm
