@@ -116,7 +116,9 @@ void EulerSolver::sweep(int axis, double dt) {
     count_quiet_faces(axis, dt, false, false);
     return;
   }
-  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;  // the two other axes
+  // The two other axes; a1 varies fastest from pencil to pencil, and is x
+  // whenever possible so that neighbouring pencils share cache lines.
+  const int a1 = axis == 0 ? 1 : 0, a2 = 3 - axis - a1;
   const std::size_t stride = g.cell_index(axis == 0, axis == 1, axis == 2);
   const AxisBoundaries faces{boundaries_[static_cast<config::Face>(2 * axis)],
                              boundaries_[static_cast<config::Face>(2 * axis + 1)]};
@@ -128,6 +130,13 @@ void EulerSolver::sweep(int axis, double dt) {
   const int lines1 = box_.upper[a1] - box_.lower[a1];
   const int lines2 = box_.upper[a2] - box_.lower[a2];
 
+  // Blocks of neighbouring lines along a1 (lanes), except for x-sweeps whose
+  // lines are already contiguous.
+  const std::size_t lane_width = axis == 0 ? 1 : kMaxLanes;
+  const std::size_t lane_stride = g.cell_index(a1 == 0, a1 == 1, a1 == 2);
+  const int blocks1 =
+      static_cast<int>((static_cast<std::size_t>(lines1) + lane_width - 1) / lane_width);
+
   double leaving[kVariables] = {};  // an array, for the OpenMP reduction
   std::optional<std::pair<grid::Index3, BadCell>> bad;
   const long long work = static_cast<long long>(last - first) * lines1 * lines2;
@@ -136,25 +145,30 @@ void EulerSolver::sweep(int axis, double dt) {
     Pencil& pencil = pencils_[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for collapse(2) schedule(static)
     for (int l2 = 0; l2 < lines2; ++l2)
-      for (int l1 = 0; l1 < lines1; ++l1) {
+      for (int b1 = 0; b1 < blocks1; ++b1) {
         grid::Index3 origin{};
-        origin[a1] = box_.lower[a1] + l1;
+        origin[a1] = box_.lower[a1] + b1 * static_cast<int>(lane_width);
         origin[a2] = box_.lower[a2] + l2;
-        const PencilLine line{axis, g.cell_index(origin), stride,
-                              static_cast<std::size_t>(n[axis])};
-        gather(state_, line, faces, first, last, pencil);
+        const std::size_t lanes =
+            std::min(lane_width, static_cast<std::size_t>(box_.upper[a1] - origin[a1]));
+        const PencilBlock block{axis,        g.cell_index(origin),
+                                stride,      static_cast<std::size_t>(n[axis]),
+                                lane_stride, lanes};
+        gather(state_, block, faces, first, last, pencil);
         EndFluxes ends;
-        const auto problem = sweep_pencil(pencil, first + kGhost, last + kGhost, step, eos_, ends);
+        const auto problem =
+            sweep_pencil(pencil, lanes, first + kGhost, last + kGhost, step, eos_, ends);
         if (problem) {
 #pragma omp critical(mpfd_fdm_bad_cell)
           if (!bad) {
             grid::Index3 cell = origin;
             cell[axis] = static_cast<int>(problem->position - kGhost);
+            cell[a1] += static_cast<int>(problem->lane);
             bad.emplace(cell, *problem);
           }
           continue;
         }
-        scatter(pencil, line, first, last, state_);
+        scatter(pencil, block, first, last, state_);
         // Momentum slots are rotated in the pencil; map them back to x, y, z.
         for (std::size_t s = 0; s < kVariables; ++s) {
           std::size_t v = s;
@@ -176,7 +190,9 @@ void EulerSolver::sweep(int axis, double dt) {
   }
   for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[v];
   count_quiet_faces(axis, dt, at_lower, at_upper);
-  cell_updates_ += static_cast<double>(last - first) * lines1 * lines2;
+  // A cell-update is one cell advanced by one whole step: a share of the
+  // step's sweeps.
+  cell_updates_ += static_cast<double>(last - first) * lines1 * lines2 / (2.0 * g.dimension());
 }
 
 void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, bool upper_updated) {

@@ -44,7 +44,8 @@ class EulerSolver {
   [[nodiscard]] const EulerState& state() const { return state_; }
   [[nodiscard]] const std::vector<eos::AnyEos>& materials() const { return eos_; }
   [[nodiscard]] const ActiveBox& active_box() const { return box_; }
-  /// Cell updates (cells x sweeps) done so far, for throughput figures.
+  /// Cell updates done so far (one = one cell advanced by one whole step of
+  /// (2-52); skipped still cells do not count), for throughput figures.
   [[nodiscard]] double cell_updates() const { return cell_updates_; }
 
   [[nodiscard]] Totals totals() const;

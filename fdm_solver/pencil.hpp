@@ -1,8 +1,11 @@
 #pragma once
-// One line of cells along the sweep axis, gathered into contiguous buffers so
-// that the sweep's inner loops are unit-stride and vectorise. Variables are
-// rotated so that "normal" momentum is along the sweep axis. One Pencil per
-// thread, sized once for the longest axis: no allocation inside a step.
+// A block of up to kMaxLanes neighbouring lines of cells along the sweep axis,
+// gathered into contiguous buffers interleaved by lane: value of lane w at
+// position i is at [i * lanes + w]. Every operation of a sweep is elementwise
+// along the line with neighbours at i +- 1, so it runs on all lanes at once
+// with neighbours at +- lanes, and the inner loops are unit-stride whatever
+// the sweep axis. Variables are rotated so that "normal" momentum is along
+// the sweep axis. One Pencil per thread, sized once: no allocation in a step.
 
 #include <array>
 #include <cstdint>
@@ -13,6 +16,10 @@ namespace mpfd::fdm {
 /// Rotated conserved variables: density, normal momentum, the two tangential
 /// momenta, total energy.
 enum PencilVariable : std::size_t { kRho = 0, kMn, kMt1, kMt2, kE };
+
+/// Lanes per block for sweeps across the x-rows (one 64-byte cache line of
+/// doubles per row and position).
+inline constexpr std::size_t kMaxLanes = 8;
 
 struct Pencil {
   std::array<std::vector<double>, 5> u;          ///< state; updated in place
@@ -25,6 +32,7 @@ struct Pencil {
   std::vector<double> theta;  ///< shock switch, T (2-57)
   std::vector<std::uint8_t> material;
 
+  /// Room for `length` positions of kMaxLanes lanes.
   void resize(std::size_t length);
 };
 

@@ -16,53 +16,62 @@ bool is_mirror(config::BoundaryKind kind) {
   return kind != config::BoundaryKind::outflow;
 }
 
-/// Fills ghost position `ghost` of the pencil from interior cell `source`
-/// (pencil positions), reversing the normal momentum for a mirror.
-void make_ghost(Pencil& p, std::size_t ghost, std::size_t source, bool mirror) {
-  for (std::size_t s = 0; s < 5; ++s) p.u[s][ghost] = p.u[s][source];
-  if (mirror) p.u[kMn][ghost] = -p.u[kMn][source];
-  p.material[ghost] = p.material[source];
+/// Fills ghost position `ghost` of every lane from position `source`,
+/// reversing the normal momentum for a mirror.
+void make_ghost(Pencil& p, std::size_t lanes, std::size_t ghost, std::size_t source, bool mirror) {
+  for (std::size_t w = 0; w < lanes; ++w) {
+    const std::size_t to = ghost * lanes + w, from = source * lanes + w;
+    for (std::size_t s = 0; s < 5; ++s) p.u[s][to] = p.u[s][from];
+    if (mirror) p.u[kMn][to] = -p.u[kMn][from];
+    p.material[to] = p.material[from];
+  }
 }
 
 }  // namespace
 
-void gather(const EulerState& state, const PencilLine& line, AxisBoundaries faces,
+void gather(const EulerState& state, const PencilBlock& block, AxisBoundaries faces,
             std::size_t first, std::size_t last, Pencil& pencil) {
+  const std::size_t lanes = block.lanes;
   // Interior cells that exist within the stencil of [first, last).
   const std::size_t lo = first >= kGhost ? first - kGhost : 0;
-  const std::size_t hi = std::min(last + kGhost, line.length);
+  const std::size_t hi = std::min(last + kGhost, block.length);
   for (std::size_t s = 0; s < 5; ++s) {
-    const double* src = state.u[kSlot[line.axis][s]].data() + line.start;
-    double* dst = pencil.u[s].data() + kGhost;
-    for (std::size_t i = lo; i < hi; ++i) dst[i] = src[i * line.stride];
+    const double* src = state.u[kSlot[block.axis][s]].data() + block.start;
+    double* dst = pencil.u[s].data();
+    for (std::size_t i = lo; i < hi; ++i)
+      for (std::size_t w = 0; w < lanes; ++w)
+        dst[(i + kGhost) * lanes + w] = src[i * block.stride + w * block.lane_stride];
   }
-  const std::uint8_t* mat = state.material.data() + line.start;
-  for (std::size_t i = lo; i < hi; ++i) pencil.material[i + kGhost] = mat[i * line.stride];
+  const std::uint8_t* mat = state.material.data() + block.start;
+  for (std::size_t i = lo; i < hi; ++i)
+    for (std::size_t w = 0; w < lanes; ++w)
+      pencil.material[(i + kGhost) * lanes + w] = mat[i * block.stride + w * block.lane_stride];
 
   // Ghosts where the stencil passes a domain face.
+  const std::size_t deepest = block.length - 1;  // mirrors of short lines repeat the far end
   if (first < kGhost) {
-    for (std::size_t m = 0; m < kGhost; ++m) {
-      const std::size_t source =
-          is_mirror(faces.lower) ? kGhost + std::min(m, line.length - 1) : kGhost;
-      make_ghost(pencil, kGhost - 1 - m, source, is_mirror(faces.lower));
-    }
+    const bool mirror = is_mirror(faces.lower);
+    for (std::size_t m = 0; m < kGhost; ++m)
+      make_ghost(pencil, lanes, kGhost - 1 - m, mirror ? kGhost + std::min(m, deepest) : kGhost,
+                 mirror);
   }
-  if (last + kGhost > line.length) {
-    const std::size_t end = line.length + kGhost;  // first ghost past the upper face
-    for (std::size_t m = 0; m < kGhost; ++m) {
-      const std::size_t source =
-          is_mirror(faces.upper) ? end - 1 - std::min(m, line.length - 1) : end - 1;
-      make_ghost(pencil, end + m, source, is_mirror(faces.upper));
-    }
+  if (last + kGhost > block.length) {
+    const bool mirror = is_mirror(faces.upper);
+    const std::size_t end = block.length + kGhost;  // first ghost past the upper face
+    for (std::size_t m = 0; m < kGhost; ++m)
+      make_ghost(pencil, lanes, end + m, mirror ? end - 1 - std::min(m, deepest) : end - 1, mirror);
   }
 }
 
-void scatter(const Pencil& pencil, const PencilLine& line, std::size_t first, std::size_t last,
+void scatter(const Pencil& pencil, const PencilBlock& block, std::size_t first, std::size_t last,
              EulerState& state) {
+  const std::size_t lanes = block.lanes;
   for (std::size_t s = 0; s < 5; ++s) {
-    double* dst = state.u[kSlot[line.axis][s]].data() + line.start;
-    const double* src = pencil.u[s].data() + kGhost;
-    for (std::size_t i = first; i < last; ++i) dst[i * line.stride] = src[i];
+    double* dst = state.u[kSlot[block.axis][s]].data() + block.start;
+    const double* src = pencil.u[s].data();
+    for (std::size_t i = first; i < last; ++i)
+      for (std::size_t w = 0; w < lanes; ++w)
+        dst[i * block.stride + w * block.lane_stride] = src[(i + kGhost) * lanes + w];
   }
 }
 

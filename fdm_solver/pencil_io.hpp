@@ -1,8 +1,8 @@
 #pragma once
-// Moving one line of cells between the state and a Pencil: gather (rotating
-// momenta so the sweep axis is "normal", and making the kGhost ghost cells
-// at each domain face from its boundary condition) and scatter back.
-// Boundary conditions, per face:
+// Moving a block of neighbouring lines of cells between the state and a
+// Pencil: gather (rotating momenta so the sweep axis is "normal", and making
+// the kGhost ghost cells at each domain face from its boundary condition)
+// and scatter back. Boundary conditions, per face:
 //   outflow   zero gradient: every ghost copies the adjacent cell (transmissive);
 //   wall      mirror image with the normal momentum reversed (reflective);
 //   symmetry  the same mirror: for inviscid flow a symmetry plane is a wall.
@@ -21,12 +21,14 @@ namespace mpfd::fdm {
 /// more, and its face switch max(theta_i, theta_i+1) (2-57) one more.
 inline constexpr std::size_t kGhost = 3;
 
-/// Where a pencil lies: its axis, and the state index of its first cell.
-struct PencilLine {
-  int axis;
-  std::size_t start;
-  std::size_t stride;
-  std::size_t length;  ///< interior cells
+/// Where a block of lines lies in the state.
+struct PencilBlock {
+  int axis;                 ///< the sweep axis
+  std::size_t start;        ///< state index of the first cell of lane 0
+  std::size_t stride;       ///< between neighbours along the axis
+  std::size_t length;       ///< interior cells along the axis
+  std::size_t lane_stride;  ///< between neighbouring lanes
+  std::size_t lanes;        ///< 1 ... kMaxLanes
 };
 
 /// The boundary condition of the two faces normal to an axis.
@@ -35,14 +37,14 @@ struct AxisBoundaries {
   config::BoundaryKind upper;
 };
 
-/// Copies the line's cells [first, last) plus kGhost neighbours on each side
-/// (made from the boundary conditions where the line ends) into the pencil;
-/// pencil position = cell position + kGhost.
-void gather(const EulerState& state, const PencilLine& line, AxisBoundaries faces,
+/// Copies cells [first, last) of every lane plus kGhost neighbours on each
+/// side (made from the boundary conditions where the lines end) into the
+/// pencil; pencil position = cell position + kGhost.
+void gather(const EulerState& state, const PencilBlock& block, AxisBoundaries faces,
             std::size_t first, std::size_t last, Pencil& pencil);
 
-/// Copies the pencil's cells [first, last) back into the state.
-void scatter(const Pencil& pencil, const PencilLine& line, std::size_t first, std::size_t last,
+/// Copies the pencil's cells [first, last) of every lane back into the state.
+void scatter(const Pencil& pencil, const PencilBlock& block, std::size_t first, std::size_t last,
              EulerState& state);
 
 }  // namespace mpfd::fdm

@@ -1,5 +1,7 @@
 #include "fdm_solver/standalone_run.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -53,6 +55,13 @@ std::vector<io::FieldView> field_views(const config::Scene& scene, const EulerSt
     }
   }
   return views;
+}
+
+/// Peak resident memory of this process so far [bytes].
+long long peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024LL * usage.ru_maxrss;  // Linux reports kilobytes
 }
 
 constexpr const char* kAuditName[kVariables] = {"mass", "momentum_x", "momentum_y", "momentum_z",
@@ -123,6 +132,9 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_rate("cell_updates_per_second",
                      solver_seconds > 0 ? solver.cell_updates() / solver_seconds : 0.0);
     summary.set_detail("cells", grid.cell_count());
+    summary.set_detail("peak_memory_bytes", peak_memory_bytes());
+    summary.set_detail("peak_memory_bytes_per_cell", static_cast<double>(peak_memory_bytes()) /
+                                                         static_cast<double>(grid.cell_count()));
     summary.set_detail("solver_time_s", solver_seconds);
     summary.set_detail("cell_updates", solver.cell_updates());
     summary.set_status(status, error);

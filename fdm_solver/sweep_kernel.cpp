@@ -54,6 +54,13 @@ void compute_pressure(std::span<const eos::AnyEos> eos, const std::uint8_t* mate
   const double* mt2 = u[kMt2].data();
   const double* e_total = u[kE].data();
   const auto kernel = [&](const auto& model, std::size_t begin, std::size_t end) {
+    if (sound_speed == nullptr) {
+#pragma omp simd
+      for (std::size_t i = begin; i < end; ++i)
+        pressure[i] =
+            model.pressure(rho[i], specific_energy(rho[i], mn[i], mt1[i], mt2[i], e_total[i]));
+      return;
+    }
 #pragma omp simd
     for (std::size_t i = begin; i < end; ++i) {
       const double e = specific_energy(rho[i], mn[i], mt1[i], mt2[i], e_total[i]);
@@ -71,9 +78,13 @@ void compute_pressure(std::span<const eos::AnyEos> eos, const std::uint8_t* mate
     std::visit([&](const auto& model) { kernel(model, i, i + 1); }, eos[material[i]]);
 }
 
-std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t first, std::size_t last,
-                                    const SweepStep& step, std::span<const eos::AnyEos> eos,
-                                    EndFluxes& ends) {
+std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size_t first,
+                                    std::size_t last, const SweepStep& step,
+                                    std::span<const eos::AnyEos> eos, EndFluxes& ends) {
+  // Flattened entries j = position * lanes + lane; the neighbour along the
+  // line is j +- w.
+  const std::size_t w = lanes;
+  const std::size_t begin = first * w, end = last * w;
   auto& u = pencil.u;
   auto& ubar = pencil.ubar;
   auto& flux = pencil.flux;
@@ -86,29 +97,29 @@ std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t first, std::size
   const double courant = step.dt / step.dx;
 
   // 1. Pressure and sound speed on the whole stencil; refuse unphysical cells.
-  compute_pressure(eos, mat, u, p, c, first - 3, last + 3);
-  for (std::size_t i = first; i < last; ++i)
-    if (!(u[kRho][i] > 0.0) || !(p[i] > 0.0) || !std::isfinite(u[kE][i]))
-      return BadCell{i, u[kRho][i], p[i]};
+  compute_pressure(eos, mat, u, p, c, begin - 3 * w, end + 3 * w);
+  for (std::size_t j = begin; j < end; ++j)
+    if (!(u[kRho][j] > 0.0) || !(p[j] > 0.0) || !std::isfinite(u[kE][j]))
+      return BadCell{j / w, j % w, u[kRho][j], p[j]};
 
   // 2. Shock switch, T (2-57): 1 at a jump, 0 where the density is linear.
   const double* rho = u[kRho].data();
 #pragma omp simd
-  for (std::size_t i = first - 2; i < last + 2; ++i) {
-    const double right = std::abs(rho[i + 1] - rho[i]);
-    const double left = std::abs(rho[i] - rho[i - 1]);
+  for (std::size_t j = begin - 2 * w; j < end + 2 * w; ++j) {
+    const double right = std::abs(rho[j + w] - rho[j]);
+    const double left = std::abs(rho[j] - rho[j - w]);
     const double sum = right + left;
-    theta[i] = sum > 0.0 ? std::abs(right - left) / sum : 0.0;
+    theta[j] = sum > 0.0 ? std::abs(right - left) / sum : 0.0;
   }
-  // Viscous exchange across face i+1/2 (between cells i and i+1), T (2-56), (2-58).
+  // Viscous exchange across the face between j and j + w, T (2-56), (2-58).
   for (std::size_t v = 0; v < 5; ++v) {
     const double* uv = u[v].data();
     double* d = diff[v].data();
 #pragma omp simd
-    for (std::size_t i = first - 2; i < last + 1; ++i) {
-      const double nu = std::min(1.0, courant * std::max(c[i], c[i + 1]));
+    for (std::size_t j = begin - 2 * w; j < end + w; ++j) {
+      const double nu = std::min(1.0, courant * std::max(c[j], c[j + w]));
       const double eta = nu * (1.0 - nu);
-      d[i] = 0.5 * step.viscosity * eta * std::max(theta[i], theta[i + 1]) * (uv[i + 1] - uv[i]);
+      d[j] = 0.5 * step.viscosity * eta * std::max(theta[j], theta[j + w]) * (uv[j + w] - uv[j]);
     }
   }
   for (std::size_t v = 0; v < 5; ++v) {
@@ -116,52 +127,56 @@ std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t first, std::size
     const double* d = diff[v].data();
     double* ub = ubar[v].data();
 #pragma omp simd
-    for (std::size_t i = first - 1; i < last + 1; ++i) ub[i] = uv[i] + d[i] - d[i - 1];
+    for (std::size_t j = begin - w; j < end + w; ++j) ub[j] = uv[j] + d[j] - d[j - w];
   }
 
-  // 3. Richtmyer predictor at faces i+1/2 for i in [first-1, last).
-  compute_pressure(eos, mat, ubar, p, c, first - 1, last + 1);
-  euler_flux(ubar, p, flux, first - 1, last + 1);
+  // 3. Richtmyer predictor at the faces between j and j + w.
+  compute_pressure(eos, mat, ubar, p, nullptr, begin - w, end + w);
+  euler_flux(ubar, p, flux, begin - w, end + w);
   for (std::size_t v = 0; v < 5; ++v) {
     const double* ub = ubar[v].data();
     const double* f = flux[v].data();
     double* h = half[v].data();
 #pragma omp simd
-    for (std::size_t i = first - 1; i < last; ++i)
-      h[i] = 0.5 * (ub[i] + ub[i + 1]) - 0.5 * courant * (f[i + 1] - f[i]);
+    for (std::size_t j = begin - w; j < end; ++j)
+      h[j] = 0.5 * (ub[j] + ub[j + w]) - 0.5 * courant * (f[j + w] - f[j]);
   }
   // Face pressure: the EOS of the material on both sides, or the mean of the
   // two EOS where the face separates two materials.
-  compute_pressure(eos, mat, half, p, c, first - 1, last);
-  for (std::size_t i = first - 1; i < last; ++i) {
-    if (mat[i] == mat[i + 1]) continue;
+  compute_pressure(eos, mat, half, p, nullptr, begin - w, end);
+  for (std::size_t j = begin - w; j < end; ++j) {
+    if (mat[j] == mat[j + w]) continue;
     const double e =
-        specific_energy(half[kRho][i], half[kMn][i], half[kMt1][i], half[kMt2][i], half[kE][i]);
-    p[i] = 0.5 * (eos::pressure(eos[mat[i]], half[kRho][i], e) +
-                  eos::pressure(eos[mat[i + 1]], half[kRho][i], e));
+        specific_energy(half[kRho][j], half[kMn][j], half[kMt1][j], half[kMt2][j], half[kE][j]);
+    p[j] = 0.5 * (eos::pressure(eos[mat[j]], half[kRho][j], e) +
+                  eos::pressure(eos[mat[j + w]], half[kRho][j], e));
   }
-  euler_flux(half, p, flux, first - 1, last);
+  euler_flux(half, p, flux, begin - w, end);
 
-  // 4. Corrector on [first, last), and what crossed the range's two ends.
+  // 4. Corrector, and what crossed the range's two ends.
   for (std::size_t v = 0; v < 5; ++v) {
     const double* ub = ubar[v].data();
     const double* f = flux[v].data();
+    const double* d = diff[v].data();
     double* uv = u[v].data();
 #pragma omp simd
-    for (std::size_t i = first; i < last; ++i) uv[i] = ub[i] - courant * (f[i] - f[i - 1]);
-    ends.lower[v] += step.dt * f[first - 1] - step.dx * diff[v][first - 1];
-    ends.upper[v] += step.dt * f[last - 1] - step.dx * diff[v][last - 1];
+    for (std::size_t j = begin; j < end; ++j) uv[j] = ub[j] - courant * (f[j] - f[j - w]);
+    for (std::size_t lane = 0; lane < w; ++lane) {
+      ends.lower[v] += step.dt * f[begin - w + lane] - step.dx * d[begin - w + lane];
+      ends.upper[v] += step.dt * f[end - w + lane] - step.dx * d[end - w + lane];
+    }
   }
   return std::nullopt;
 }
 
 void Pencil::resize(std::size_t length) {
+  const std::size_t entries = length * kMaxLanes;
   for (auto* group : {&u, &ubar, &flux, &half, &diffusion})
-    for (auto& v : *group) v.assign(length, 0.0);
-  pressure.assign(length, 0.0);
-  sound_speed.assign(length, 0.0);
-  theta.assign(length, 0.0);
-  material.assign(length, 0);
+    for (auto& v : *group) v.assign(entries, 0.0);
+  pressure.assign(entries, 0.0);
+  sound_speed.assign(entries, 0.0);
+  theta.assign(entries, 0.0);
+  material.assign(entries, 0);
 }
 
 }  // namespace mpfd::fdm

@@ -1,5 +1,6 @@
 #pragma once
-// One 1D sweep of the split Euler equations over a pencil, T (2-53)-(2-58):
+// One 1D sweep of the split Euler equations over a block of pencils,
+// T (2-53)-(2-58):
 //  1. pressure and sound speed from the EOS of each cell's material;
 //  2. adaptive artificial viscosity, T (2-56)-(2-58), in conservative form:
 //       Ubar_i = U_i + D_{i+1/2} - D_{i-1/2},
@@ -32,27 +33,29 @@ struct SweepStep {
 
 /// A cell whose state is not physical (density or pressure not > 0, or not finite).
 struct BadCell {
-  std::size_t position;  ///< index in the pencil
+  std::size_t position;  ///< position along the pencil
+  std::size_t lane;      ///< lane of the block
   double density;
   double pressure;
 };
 
-/// What crossed the two ends of the updated range during the sweep, per unit
-/// face area: sum over the sweep of dt F - dx D (kg/m^2, kg/(m s), J/m^2).
+/// What crossed the two ends of the updated range during the sweep, summed
+/// over the lanes, per unit face area: dt F - dx D (kg/m^2, kg/(m s), J/m^2).
 struct EndFluxes {
   std::array<double, 5> lower{};
   std::array<double, 5> upper{};
 };
 
-/// Updates pencil positions [first, last) in place (position = cell + kGhost). The pencil must hold
-/// valid states on [first - 3, last + 3). Returns the first unphysical cell
-/// met in [first, last) before the update, if any (the pencil is then left
-/// unchanged).
-std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t first, std::size_t last,
-                                    const SweepStep& step, std::span<const eos::AnyEos> eos,
-                                    EndFluxes& ends);
+/// Updates positions [first, last) of every lane in place (position = cell +
+/// kGhost). The pencil must hold valid states on [first - 3, last + 3).
+/// Returns the first unphysical cell met in [first, last) before the
+/// update, if any (the pencil is then left unchanged).
+std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size_t first,
+                                    std::size_t last, const SweepStep& step,
+                                    std::span<const eos::AnyEos> eos, EndFluxes& ends);
 
-/// Pressure and sound speed of cells [first, last) from the rotated state.
+/// Pressure of buffer entries [first, last) from the rotated state, and their
+/// sound speed too unless `sound_speed` is null.
 void compute_pressure(std::span<const eos::AnyEos> eos, const std::uint8_t* material,
                       const std::array<std::vector<double>, 5>& u, double* pressure,
                       double* sound_speed, std::size_t first, std::size_t last);
