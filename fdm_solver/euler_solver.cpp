@@ -215,6 +215,19 @@ void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, boo
   }
 }
 
+EulerState& EulerSolver::state_for_update(const ActiveBox& region) {
+  if (region.empty()) return state_;
+  if (box_.empty()) {
+    box_ = region;
+  } else {
+    for (int a = 0; a < 3; ++a) {
+      box_.lower[a] = std::min(box_.lower[a], region.lower[a]);
+      box_.upper[a] = std::max(box_.upper[a], region.upper[a]);
+    }
+  }
+  return state_;
+}
+
 Totals EulerSolver::totals() const {
   Totals sum{};
   const double volume = state_.grid.cell_volume();

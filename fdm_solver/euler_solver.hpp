@@ -42,6 +42,10 @@ class EulerSolver {
   [[nodiscard]] double time() const { return time_; }
   [[nodiscard]] std::int64_t steps() const { return steps_; }
   [[nodiscard]] const EulerState& state() const { return state_; }
+  /// Write access for data from outside (coupling, restore): the cells of
+  /// `region` join the disturbed region, so that skipping still cells stays
+  /// exact. Write only inside `region`.
+  [[nodiscard]] EulerState& state_for_update(const ActiveBox& region);
   [[nodiscard]] const std::vector<eos::AnyEos>& materials() const { return eos_; }
   [[nodiscard]] const ActiveBox& active_box() const { return box_; }
   /// Cell updates done so far (one = one cell advanced by one whole step of

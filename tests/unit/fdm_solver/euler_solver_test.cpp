@@ -148,3 +148,29 @@ TEST(EulerSolver, VacuumFormationStopsWithTheCellTimeAndValues) {
 
 }  // namespace
 }  // namespace mpfd::fdm
+
+namespace mpfd::fdm {
+namespace {
+
+TEST(EulerSolver, DataWrittenFromOutsideJoinsTheDisturbedRegion) {
+  const auto scene = testing::gas_scene("[1, 1, 1]", "[16, 16, 16]",
+                                        "{material: gas, density: 1.2, pressure: 1.0e5}");
+  EulerSolver skipping(scene, {});
+  EulerSolver full(scene, {.skip_quiet = false});
+  const ActiveBox region{{4, 5, 6}, {6, 7, 8}};
+  for (EulerSolver* solver : {&skipping, &full}) {
+    EulerState& s = solver->state_for_update(region);
+    s.u[kEnergy][s.grid.cell_index(5, 6, 7)] *= 3.0;  // a hot cell from a coupled zone
+  }
+  EXPECT_EQ(skipping.active_box().cells(), 8);
+  for (int step = 0; step < 10; ++step) {
+    const double dt = full.stable_dt();
+    ASSERT_EQ(skipping.stable_dt(), dt);
+    skipping.advance(dt);
+    full.advance(dt);
+  }
+  for (std::size_t v = 0; v < kVariables; ++v) EXPECT_EQ(skipping.state().u[v], full.state().u[v]);
+}
+
+}  // namespace
+}  // namespace mpfd::fdm
