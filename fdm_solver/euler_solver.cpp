@@ -9,7 +9,9 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/parallel_for.hpp"
 #include "common/initial/initial_cells.hpp"
+#include "fdm_solver/cell_eos.hpp"
 #include "fdm_solver/pencil_io.hpp"
 #include "fdm_solver/sweep_kernel.hpp"
 
@@ -34,10 +36,14 @@ EulerState initial_state(const config::Scene& scene) {
   return s;
 }
 
-/// Below this many cells a loop runs on one thread: starting a team costs
-/// more than it saves, and on a loaded machine a descheduled thread stalls
-/// the barrier for a whole time slice.
-constexpr long long kParallelCells = 32768;
+/// Below this many cells a loop runs on one thread (common/core/parallel_for.hpp).
+constexpr long long kParallelCells = kMinParallelCount;
+
+double specific_energy(const EulerState& s, std::size_t c) {
+  const double rho = s.u[kDensity][c];
+  const double mx = s.u[kMomentumX][c], my = s.u[kMomentumY][c], mz = s.u[kMomentumZ][c];
+  return (s.u[kEnergy][c] - 0.5 * (mx * mx + my * my + mz * mz) / rho) / rho;
+}
 
 std::string position_text(const grid::Vec3& x) {
   return "(" + std::to_string(x[0]) + ", " + std::to_string(x[1]) + ", " + std::to_string(x[2]) +
@@ -54,6 +60,25 @@ EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
   const std::size_t longest = static_cast<std::size_t>(std::max({n[0], n[1], n[2]}));
   pencils_.resize(static_cast<std::size_t>(omp_get_max_threads()));
   for (auto& p : pencils_) p.resize(longest + 2 * kGhost);
+  const auto& m = state_.material;
+  if (std::any_of(m.begin(), m.end(), [&](std::uint8_t x) { return x != m.front(); })) {
+    const std::size_t cells = state_.grid.cell_count();
+    state_.mix_gamma.assign(cells, 0.0);
+    state_.mix_pinf.assign(cells, 0.0);
+    for (auto& v : velocity_) v.assign(cells, 0.0);
+    energy_.assign(cells, 0.0);
+    pressure_.assign(cells, 0.0);
+    const std::vector<double> material(m.begin(), m.end());
+    for (std::size_t c = 0; c < cells; ++c) energy_[c] = specific_energy(state_, c);
+    tracker_.emplace(state_.grid, eos_, material, state_.u[kDensity], energy_,
+                     options_.tracers_per_axis);
+    for (int f = 0; f < 6; ++f)
+      tracer_faces_[static_cast<std::size_t>(f)] =
+          boundaries_[static_cast<config::Face>(f)] == config::BoundaryKind::outflow
+              ? TracerFace::outflow
+              : TracerFace::reflect;
+    update_materials();
+  }
   box_ = options_.skip_quiet ? disturbed_cells(state_, boundaries_) : whole_grid(state_.grid);
   quiet_flux_ = quiet_face_flux(state_, boundaries_, eos_);
   initial_line_limit_.resize(static_cast<std::size_t>(n[1]) * n[2]);
@@ -73,7 +98,7 @@ double EulerSolver::line_limit(std::size_t start) const {
     const double m[3] = {state_.u[kMomentumX][i], state_.u[kMomentumY][i], state_.u[kMomentumZ][i]};
     const double e =
         (state_.u[kEnergy][i] - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
-    const double c = eos::sound_speed(eos_[state_.material[i]], rho, e);
+    const double c = cell_sound_speed(state_, eos_, i, rho, e);
     for (int a = 0; a < 3; ++a)
       if (g.is_active(a)) limit = std::min(limit, g.spacing()[a] / (std::abs(m[a] / rho) + c));
   }
@@ -101,9 +126,19 @@ double EulerSolver::stable_dt() const {
 void EulerSolver::advance(double dt) {
   MPFD_ASSERT(dt > 0.0 && std::isfinite(dt), "time step must be positive and finite");
   const auto& g = state_.grid;
+  if (tracker_) {  // tracers move with the velocities of time level n, T (3-13)
+    const auto& u = state_.u;
+    for (std::size_t c = 0; c < g.cell_count(); ++c)
+      for (std::size_t a = 0; a < 3; ++a) velocity_[a][c] = u[kMomentumX + a][c] / u[kDensity][c];
+    tracker_->advect(VelocityView{{velocity_[0], velocity_[1], velocity_[2]}}, dt, tracer_faces_);
+  }
   // T (2-52): U^{n+1} = Lz Ly Lx Lx Ly Lz U^n, each over dt/2; the rightmost acts first.
   for (const int axis : {2, 1, 0, 0, 1, 2})
     if (g.is_active(axis)) sweep(axis, 0.5 * dt);
+  if (tracker_) {
+    for (std::size_t c = 0; c < g.cell_count(); ++c) energy_[c] = specific_energy(state_, c);
+    update_materials();
+  }
   time_ += dt;
   ++steps_;
 }
@@ -212,6 +247,35 @@ void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, boo
             still -= quiet_flux_.flux[face][v][static_cast<std::size_t>(l1 + g.cells()[a1] * l2)];
       outflow_[v] += sign * still * impulse;
     }
+  }
+}
+
+void EulerSolver::update_materials() {
+  closure_ = tracker_->update_pressure(state_.u[kDensity], energy_, pressure_);
+  const MaterialMap& map = tracker_->materials();
+  const MaterialStates& parts = tracker_->states();
+  const std::size_t cells = state_.grid.cell_count();
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (!map.is_mixed(c)) {
+      state_.material[c] = static_cast<std::uint8_t>(map.material[c]);
+      continue;
+    }
+    // Wood's mixture sound speed: 1/(rho c^2) = sum_r theta_r / (rho_r c_r^2).
+    const double rho = state_.u[kDensity][c];
+    double compliance = 0.0;
+    for (int r = 0; r < map.material_count; ++r) {
+      const double theta = map.theta[static_cast<std::size_t>(r) * cells + c];
+      if (theta <= 0.0) continue;
+      const std::size_t k = parts.at(r, c);
+      const double cr =
+          eos::sound_speed(eos_[static_cast<std::size_t>(r)], parts.density[k], parts.energy[k]);
+      compliance += theta / (parts.density[k] * cr * cr);
+    }
+    const StiffenedGas fit =
+        fit_stiffened_gas(rho, energy_[c], pressure_[c], 1.0 / (rho * compliance));
+    state_.material[c] = kMixedMaterial;
+    state_.mix_gamma[c] = fit.gamma;
+    state_.mix_pinf[c] = fit.pinf;
   }
 }
 

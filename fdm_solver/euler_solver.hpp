@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/config/scene.hpp"
@@ -14,13 +15,15 @@
 #include "fdm_solver/euler_state.hpp"
 #include "fdm_solver/pencil.hpp"
 #include "fdm_solver/quiet_face_flux.hpp"
+#include "fdm_solver/tracer/multi_material_tracker.hpp"
 
 namespace mpfd::fdm {
 
 struct SolverOptions {
-  double cfl = 0.5;        ///< Courant number of each 1D sweep, (|u| + c) dt_sweep / dx
-  double viscosity = 1.0;  ///< kappa, scale of the artificial viscosity (2-58)
-  bool skip_quiet = true;  ///< update only the disturbed region (bitwise the same result)
+  double cfl = 0.5;          ///< Courant number of each 1D sweep, (|u| + c) dt_sweep / dx
+  double viscosity = 1.0;    ///< kappa, scale of the artificial viscosity (2-58)
+  bool skip_quiet = true;    ///< update only the disturbed region (bitwise the same result)
+  int tracers_per_axis = 2;  ///< massless tracers per cell and active axis (multi-material)
 };
 
 /// Conserved totals over the domain: mass [kg], momentum x/y/z [kg m/s], energy [J].
@@ -52,6 +55,13 @@ class EulerSolver {
   /// (2-52); skipped still cells do not count), for throughput figures.
   [[nodiscard]] double cell_updates() const { return cell_updates_; }
 
+  /// The tracers and volume fractions, or null in a one-material scene.
+  [[nodiscard]] const MultiMaterialTracker* tracker() const {
+    return tracker_ ? &*tracker_ : nullptr;
+  }
+  /// Mixed cells and closure fallbacks at the end of the last step.
+  [[nodiscard]] const ClosureReport& last_closure() const { return closure_; }
+
   [[nodiscard]] Totals totals() const;
   /// What has left through the domain faces since the start (momentum: the
   /// impulse of walls included).
@@ -62,6 +72,8 @@ class EulerSolver {
   /// Adds what crossed the faces normal to `axis` at still boundary cells.
   void count_quiet_faces(int axis, double dt, bool lower_updated, bool upper_updated);
   [[nodiscard]] double line_limit(std::size_t start) const;
+  /// Cell pressures from the tracer closure; mixed cells get their fitted EOS.
+  void update_materials();
 
   EulerState state_;
   config::Boundaries boundaries_;
@@ -71,6 +83,11 @@ class EulerSolver {
   std::vector<Pencil> pencils_;             // one per thread
   std::vector<double> initial_line_limit_;  // min dx/(|u|+c) of each x-line at the start
   QuietFaceFlux quiet_flux_;                // through faces of still boundary cells
+  std::optional<MultiMaterialTracker> tracker_;
+  TracerBoundaries tracer_faces_{};
+  std::array<std::vector<double>, 3> velocity_;  // scratch for tracer advection
+  std::vector<double> energy_, pressure_;        // scratch for the closure
+  ClosureReport closure_;
   Totals outflow_{};
   double time_ = 0.0;
   std::int64_t steps_ = 0;

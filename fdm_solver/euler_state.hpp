@@ -24,7 +24,11 @@ struct EulerState {
 
   grid::UniformGrid grid;
   std::array<std::vector<double>, kVariables> u;
-  std::vector<std::uint8_t> material;  ///< index into the scene's materials
+  std::vector<std::uint8_t> material;  ///< index into the scene's materials, or kMixedMaterial
+  /// Stiffened-gas EOS of mixed cells (mixture_eos.hpp); empty in a scene
+  /// with one material.
+  std::vector<double> mix_gamma;
+  std::vector<double> mix_pinf;
 };
 
 }  // namespace mpfd::fdm

@@ -31,6 +31,8 @@ struct Pencil {
   std::vector<double> sound_speed;
   std::vector<double> theta;  ///< shock switch, T (2-57)
   std::vector<std::uint8_t> material;
+  std::vector<double> mix_gamma;  ///< stiffened-gas gamma where material is kMixedMaterial
+  std::vector<double> mix_pinf;   ///< stiffened-gas pi [Pa], same
 
   /// Room for `length` positions of kMaxLanes lanes.
   void resize(std::size_t length);

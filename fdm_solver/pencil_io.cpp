@@ -24,6 +24,8 @@ void make_ghost(Pencil& p, std::size_t lanes, std::size_t ghost, std::size_t sou
     for (std::size_t s = 0; s < 5; ++s) p.u[s][to] = p.u[s][from];
     if (mirror) p.u[kMn][to] = -p.u[kMn][from];
     p.material[to] = p.material[from];
+    p.mix_gamma[to] = p.mix_gamma[from];
+    p.mix_pinf[to] = p.mix_pinf[from];
   }
 }
 
@@ -46,6 +48,16 @@ void gather(const EulerState& state, const PencilBlock& block, AxisBoundaries fa
   for (std::size_t i = lo; i < hi; ++i)
     for (std::size_t w = 0; w < lanes; ++w)
       pencil.material[(i + kGhost) * lanes + w] = mat[i * block.stride + w * block.lane_stride];
+  if (!state.mix_gamma.empty()) {
+    const double* gamma = state.mix_gamma.data() + block.start;
+    const double* pinf = state.mix_pinf.data() + block.start;
+    for (std::size_t i = lo; i < hi; ++i)
+      for (std::size_t w = 0; w < lanes; ++w) {
+        const std::size_t from = i * block.stride + w * block.lane_stride;
+        pencil.mix_gamma[(i + kGhost) * lanes + w] = gamma[from];
+        pencil.mix_pinf[(i + kGhost) * lanes + w] = pinf[from];
+      }
+  }
 
   // Ghosts where the stencil passes a domain face.
   const std::size_t deepest = block.length - 1;  // mirrors of short lines repeat the far end

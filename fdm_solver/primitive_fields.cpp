@@ -1,5 +1,8 @@
 #include "fdm_solver/primitive_fields.hpp"
 
+#include "common/core/parallel_for.hpp"
+#include "fdm_solver/cell_eos.hpp"
+
 namespace mpfd::fdm {
 
 void PrimitiveFields::compute(const EulerState& state, const std::vector<eos::AnyEos>& eos) {
@@ -8,7 +11,7 @@ void PrimitiveFields::compute(const EulerState& state, const std::vector<eos::An
                   &sound_speed, &material})
     f->resize(n);
   const auto& u = state.u;
-#pragma omp parallel for schedule(static) if (n >= 32768)  // see euler_solver.cpp
+#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kMinParallelCount))
   for (std::size_t i = 0; i < n; ++i) {
     const double rho = u[kDensity][i];
     velocity_x[i] = u[kMomentumX][i] / rho;
@@ -18,10 +21,9 @@ void PrimitiveFields::compute(const EulerState& state, const std::vector<eos::An
                                   velocity_z[i] * velocity_z[i]);
     const double e = u[kEnergy][i] / rho - kinetic;
     specific_internal_energy[i] = e;
-    const auto& model = eos[state.material[i]];
-    pressure[i] = eos::pressure(model, rho, e);
-    sound_speed[i] = eos::sound_speed(model, rho, e);
-    material[i] = state.material[i];
+    pressure[i] = cell_pressure(state, eos, i, rho, e);
+    sound_speed[i] = cell_sound_speed(state, eos, i, rho, e);
+    material[i] = state.material[i] == kMixedMaterial ? -1.0 : state.material[i];
   }
 }
 

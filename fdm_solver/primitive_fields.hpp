@@ -15,7 +15,7 @@ struct PrimitiveFields {
   std::vector<double> specific_internal_energy;            // J/kg
   std::vector<double> pressure;                            // Pa
   std::vector<double> sound_speed;                         // m/s
-  std::vector<double> material;                            // index, as a number
+  std::vector<double> material;                            // index, as a number; -1 in a mixed cell
 
   /// Fills every field from `state` (resizing only on first use).
   void compute(const EulerState& state, const std::vector<eos::AnyEos>& eos);

@@ -1,5 +1,7 @@
 #include "fdm_solver/quiet_face_flux.hpp"
 
+#include "fdm_solver/cell_eos.hpp"
+
 namespace mpfd::fdm {
 
 QuietFaceFlux quiet_face_flux(const EulerState& state, const config::Boundaries& boundaries,
@@ -27,7 +29,7 @@ QuietFaceFlux quiet_face_flux(const EulerState& state, const config::Boundaries&
                              state.u[kMomentumZ][c]};
         const double e_total = state.u[kEnergy][c];
         const double e = (e_total - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
-        const double p = eos::pressure(eos[state.material[c]], rho, e);
+        const double p = cell_pressure(state, eos, c, rho, e);
         const double un = mirror ? 0.0 : m[a] / rho;
         q.flux[face][kDensity][line] = rho * un;
         for (int b = 0; b < 3; ++b)

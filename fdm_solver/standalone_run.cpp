@@ -16,6 +16,7 @@
 #include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "common/io/snapshot_writer.hpp"
+#include "fdm_solver/cell_eos.hpp"
 #include "fdm_solver/primitive_fields.hpp"
 
 namespace mpfd::fdm {
@@ -74,7 +75,8 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
   const Logger logger("fdm.run");
   EulerSolver solver(scene, {.cfl = scene.time.cfl,
                              .viscosity = scene.solver.fdm.artificial_viscosity,
-                             .skip_quiet = options.skip_quiet});
+                             .skip_quiet = options.skip_quiet,
+                             .tracers_per_axis = scene.solver.fdm.tracers_per_axis});
   PrimitiveFields primitives;
   primitives.compute(solver.state(), solver.materials());
   (void)field_views(scene, solver.state(), primitives);  // refuse unsupported fields up front
@@ -107,7 +109,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
       const double rho = u[kDensity][c];
       const double v[3] = {u[kMomentumX][c] / rho, u[kMomentumY][c] / rho, u[kMomentumZ][c] / rho};
       const double e = u[kEnergy][c] / rho - 0.5 * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-      const double p = eos::pressure(solver.materials()[solver.state().material[c]], rho, e);
+      const double p = cell_pressure(solver.state(), solver.materials(), c, rho, e);
       const double values[5] = {rho, p, v[0], v[1], v[2]};
       std::copy(values, values + 5, sample.begin() + static_cast<std::ptrdiff_t>(5 * g));
     }

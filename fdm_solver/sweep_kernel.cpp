@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fdm_solver/mixture_eos.hpp"
+
 namespace mpfd::fdm {
 namespace {
 
@@ -45,9 +47,8 @@ inline void euler_flux(const std::array<std::vector<double>, 5>& u, const double
 
 }  // namespace
 
-void compute_pressure(std::span<const eos::AnyEos> eos, const std::uint8_t* material,
-                      const std::array<std::vector<double>, 5>& u, double* pressure,
-                      double* sound_speed, std::size_t first, std::size_t last) {
+void compute_pressure(const EosView& eos, const std::array<std::vector<double>, 5>& u,
+                      double* pressure, double* sound_speed, std::size_t first, std::size_t last) {
   const double* rho = u[kRho].data();
   const double* mn = u[kMn].data();
   const double* mt1 = u[kMt1].data();
@@ -69,18 +70,99 @@ void compute_pressure(std::span<const eos::AnyEos> eos, const std::uint8_t* mate
     }
   };
   if (first >= last) return;
+  const std::uint8_t* material = eos.material;
   // One dispatch per pencil in the common case of one material along it.
-  if (uniform_material(material, first, last)) {
-    std::visit([&](const auto& model) { kernel(model, first, last); }, eos[material[first]]);
+  if (material[first] != kMixedMaterial && uniform_material(material, first, last)) {
+    std::visit([&](const auto& model) { kernel(model, first, last); }, eos.models[material[first]]);
     return;
   }
-  for (std::size_t i = first; i < last; ++i)
-    std::visit([&](const auto& model) { kernel(model, i, i + 1); }, eos[material[i]]);
+  for (std::size_t i = first; i < last; ++i) {
+    if (material[i] == kMixedMaterial)
+      kernel(StiffenedGas{eos.mix_gamma[i], eos.mix_pinf[i]}, i, i + 1);
+    else
+      std::visit([&](const auto& model) { kernel(model, i, i + 1); }, eos.models[material[i]]);
+  }
 }
+
+/// Pressure of entry j's EOS at the state (rho, e).
+double pressure_of(const EosView& eos, std::size_t j, double rho, double e) {
+  if (eos.material[j] == kMixedMaterial)
+    return StiffenedGas{eos.mix_gamma[j], eos.mix_pinf[j]}.pressure(rho, e);
+  return eos::pressure(eos.models[eos.material[j]], rho, e);
+}
+
+/// Sound speed of entry j's EOS at the state (rho, e).
+double sound_speed_of(const EosView& eos, std::size_t j, double rho, double e) {
+  if (eos.material[j] == kMixedMaterial)
+    return StiffenedGas{eos.mix_gamma[j], eos.mix_pinf[j]}.sound_speed(rho, e);
+  return eos::sound_speed(eos.models[eos.material[j]], rho, e);
+}
+
+/// True if entry j holds a state the next sweep can use: density and
+/// internal energy positive, and for a mixed cell's fitted EOS the pressure.
+bool physical(const Pencil& p, const EosView& eos, std::size_t j) {
+  const auto& u = p.u;
+  const double rho = u[kRho][j];
+  const double internal =
+      u[kE][j] -
+      0.5 * (u[kMn][j] * u[kMn][j] + u[kMt1][j] * u[kMt1][j] + u[kMt2][j] * u[kMt2][j]) / rho;
+  if (!(rho > 0.0) || !(internal > 0.0)) return false;
+  return eos.material[j] != kMixedMaterial || pressure_of(eos, j, rho, internal / rho) > 0.0;
+}
+
+/// Rusanov (local Lax-Friedrichs) flux of the face between entries j and
+/// j + w from the viscous states ubar, written into the flux arrays:
+/// F = (F(U_L) + F(U_R))/2 - s (U_R - U_L)/2, s = max(|u| + c) of the two.
+void rusanov_face(Pencil& p, const EosView& eos, std::size_t j, std::size_t w) {
+  std::array<double, 5> f_side[2];
+  double speed = 0.0;
+  for (int side = 0; side < 2; ++side) {
+    const std::size_t k = j + static_cast<std::size_t>(side) * w;
+    const double rho = p.ubar[kRho][k], mn = p.ubar[kMn][k];
+    const double e = specific_energy(rho, mn, p.ubar[kMt1][k], p.ubar[kMt2][k], p.ubar[kE][k]);
+    const double pressure = pressure_of(eos, k, rho, e);
+    const double un = mn / rho;
+    speed = std::max(speed, std::abs(un) + sound_speed_of(eos, k, rho, e));
+    f_side[side] = {mn, mn * un + pressure, p.ubar[kMt1][k] * un, p.ubar[kMt2][k] * un,
+                    (p.ubar[kE][k] + pressure) * un};
+  }
+  for (std::size_t v = 0; v < 5; ++v)
+    p.flux[v][j] =
+        0.5 * (f_side[0][v] + f_side[1][v]) - 0.5 * speed * (p.ubar[v][j + w] - p.ubar[v][j]);
+}
+
+/// The a-posteriori positivity fallback (in the spirit of MOOD, Clain, Diot &
+/// Loubere 2011): every cell of [begin, end) whose Lax-Wendroff update is not
+/// physical gets the first-order, positivity-preserving Rusanov flux at both
+/// its faces, and it and its neighbours are updated again from ubar. Faces
+/// are shared, so the update stays conservative. Returns true if it changed
+/// anything (the caller repeats, for cells whose new face flux hurt them).
+bool repair_unphysical_cells(Pencil& p, const EosView& eos, std::size_t w, std::size_t begin,
+                             std::size_t end, double courant) {
+  bool changed = false;
+  for (std::size_t j = begin; j < end; ++j) {
+    if (physical(p, eos, j)) continue;
+    const bool lower_done = p.theta[j - w] < 0.0, upper_done = p.theta[j] < 0.0;
+    if (lower_done && upper_done) continue;  // already first order: let the next check report it
+    // theta of the face's left cell is no longer needed: it marks Rusanov faces.
+    if (!lower_done) rusanov_face(p, eos, j - w, w), p.theta[j - w] = -1.0;
+    if (!upper_done) rusanov_face(p, eos, j, w), p.theta[j] = -1.0;
+    for (const std::size_t k : {j - w, j, j + w}) {
+      if (k < begin || k >= end) continue;
+      for (std::size_t v = 0; v < 5; ++v)
+        p.u[v][k] = p.ubar[v][k] - courant * (p.flux[v][k] - p.flux[v][k - w]);
+    }
+    changed = true;
+  }
+  return changed;
+}
+
+/// Passes of the fallback: a repaired face can in turn hurt a neighbour.
+constexpr int kFallbackPasses = 3;
 
 std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size_t first,
                                     std::size_t last, const SweepStep& step,
-                                    std::span<const eos::AnyEos> eos, EndFluxes& ends) {
+                                    std::span<const eos::AnyEos> models, EndFluxes& ends) {
   // Flattened entries j = position * lanes + lane; the neighbour along the
   // line is j +- w.
   const std::size_t w = lanes;
@@ -94,10 +176,11 @@ std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size
   double* c = pencil.sound_speed.data();
   double* theta = pencil.theta.data();
   const std::uint8_t* mat = pencil.material.data();
+  const EosView eos{models, mat, pencil.mix_gamma.data(), pencil.mix_pinf.data()};
   const double courant = step.dt / step.dx;
 
   // 1. Pressure and sound speed on the whole stencil; refuse unphysical cells.
-  compute_pressure(eos, mat, u, p, c, begin - 3 * w, end + 3 * w);
+  compute_pressure(eos, u, p, c, begin - 3 * w, end + 3 * w);
   for (std::size_t j = begin; j < end; ++j)
     if (!(u[kRho][j] > 0.0) || !(p[j] > 0.0) || !std::isfinite(u[kE][j]))
       return BadCell{j / w, j % w, u[kRho][j], p[j]};
@@ -131,8 +214,10 @@ std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size
   }
 
   // 3. Richtmyer predictor at the faces between j and j + w.
-  compute_pressure(eos, mat, ubar, p, nullptr, begin - w, end + w);
-  euler_flux(ubar, p, flux, begin - w, end + w);
+  // The sound speed is no longer needed: its array keeps the pressure of ubar.
+  double* p_ubar = c;
+  compute_pressure(eos, ubar, p_ubar, nullptr, begin - w, end + w);
+  euler_flux(ubar, p_ubar, flux, begin - w, end + w);
   for (std::size_t v = 0; v < 5; ++v) {
     const double* ub = ubar[v].data();
     const double* f = flux[v].data();
@@ -141,26 +226,30 @@ std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size
     for (std::size_t j = begin - w; j < end; ++j)
       h[j] = 0.5 * (ub[j] + ub[j + w]) - 0.5 * courant * (f[j + w] - f[j]);
   }
-  // Face pressure: the EOS of the material on both sides, or the mean of the
-  // two EOS where the face separates two materials.
-  compute_pressure(eos, mat, half, p, nullptr, begin - w, end);
-  for (std::size_t j = begin - w; j < end; ++j) {
-    if (mat[j] == mat[j + w]) continue;
-    const double e =
-        specific_energy(half[kRho][j], half[kMn][j], half[kMt1][j], half[kMt2][j], half[kE][j]);
-    p[j] = 0.5 * (eos::pressure(eos[mat[j]], half[kRho][j], e) +
-                  eos::pressure(eos[mat[j + w]], half[kRho][j], e));
-  }
+  // Face pressure: the EOS of the material on both sides. Where the face
+  // separates two materials (or a mixed cell's own fit), the half-step state
+  // blends the two and no single EOS applies; pressure is continuous across a
+  // contact, so the face takes the mean of the two cells' pressures.
+  compute_pressure(eos, half, p, nullptr, begin - w, end);
+  for (std::size_t j = begin - w; j < end; ++j)
+    if (mat[j] != mat[j + w] || mat[j] == kMixedMaterial) p[j] = 0.5 * (p_ubar[j] + p_ubar[j + w]);
   euler_flux(half, p, flux, begin - w, end);
 
-  // 4. Corrector, and what crossed the range's two ends.
+  // 4. Corrector, then the positivity fallback, then what crossed the ends.
   for (std::size_t v = 0; v < 5; ++v) {
     const double* ub = ubar[v].data();
     const double* f = flux[v].data();
-    const double* d = diff[v].data();
     double* uv = u[v].data();
 #pragma omp simd
     for (std::size_t j = begin; j < end; ++j) uv[j] = ub[j] - courant * (f[j] - f[j - w]);
+  }
+  for (int pass = 0;
+       pass < kFallbackPasses && repair_unphysical_cells(pencil, eos, w, begin, end, courant);
+       ++pass) {
+  }
+  for (std::size_t v = 0; v < 5; ++v) {
+    const double* f = flux[v].data();
+    const double* d = diff[v].data();
     for (std::size_t lane = 0; lane < w; ++lane) {
       ends.lower[v] += step.dt * f[begin - w + lane] - step.dx * d[begin - w + lane];
       ends.upper[v] += step.dt * f[end - w + lane] - step.dx * d[end - w + lane];
@@ -177,6 +266,8 @@ void Pencil::resize(std::size_t length) {
   sound_speed.assign(entries, 0.0);
   theta.assign(entries, 0.0);
   material.assign(entries, 0);
+  mix_gamma.assign(entries, 0.0);
+  mix_pinf.assign(entries, 0.0);
 }
 
 }  // namespace mpfd::fdm

@@ -46,18 +46,26 @@ struct EndFluxes {
   std::array<double, 5> upper{};
 };
 
+/// The equation of state of every buffer entry: the model of its material,
+/// or its own stiffened gas where the material is kMixedMaterial.
+struct EosView {
+  std::span<const eos::AnyEos> models;
+  const std::uint8_t* material;
+  const double* mix_gamma;
+  const double* mix_pinf;
+};
+
 /// Updates positions [first, last) of every lane in place (position = cell +
 /// kGhost). The pencil must hold valid states on [first - 3, last + 3).
 /// Returns the first unphysical cell met in [first, last) before the
 /// update, if any (the pencil is then left unchanged).
 std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size_t first,
                                     std::size_t last, const SweepStep& step,
-                                    std::span<const eos::AnyEos> eos, EndFluxes& ends);
+                                    std::span<const eos::AnyEos> models, EndFluxes& ends);
 
 /// Pressure of buffer entries [first, last) from the rotated state, and their
 /// sound speed too unless `sound_speed` is null.
-void compute_pressure(std::span<const eos::AnyEos> eos, const std::uint8_t* material,
-                      const std::array<std::vector<double>, 5>& u, double* pressure,
-                      double* sound_speed, std::size_t first, std::size_t last);
+void compute_pressure(const EosView& eos, const std::array<std::vector<double>, 5>& u,
+                      double* pressure, double* sound_speed, std::size_t first, std::size_t last);
 
 }  // namespace mpfd::fdm

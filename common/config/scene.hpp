@@ -150,7 +150,8 @@ enum class MpmUpdate { musl, usl };
 
 struct FdmOptions {
   double artificial_viscosity =
-      1.0;  ///< coefficient of the adaptive viscosity, T (2-56)-(2-58) [-]
+      1.0;                   ///< coefficient of the adaptive viscosity, T (2-56)-(2-58) [-]
+  int tracers_per_axis = 2;  ///< massless tracers per cell and active axis, T §3.2.2 [-]
 };
 
 struct MpmOptions {

@@ -183,6 +183,9 @@ std::shared_ptr<const Table<Solver>> solver_table() {
   fdm->optional("artificial_viscosity", &FdmOptions::artificial_viscosity,
                 Number("-", Range::at_least(0)),
                 "coefficient of the adaptive artificial viscosity, T (2-56)-(2-58)");
+  fdm->optional("tracers_per_axis", &FdmOptions::tracers_per_axis, Integer(Range::closed(1, 8)),
+                "massless tracers per cell along each active axis, seeded when the scene has "
+                "more than one material in the FDM zone, T §3.2.2");
   auto mpm = table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
   mpm->optional(
          "shape_function", &MpmOptions::shape_function,

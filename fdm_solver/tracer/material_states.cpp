@@ -4,8 +4,8 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/parallel_for.hpp"
 #include "fdm_solver/tracer/energy_split.hpp"
-#include "fdm_solver/tracer/parallel_for.hpp"
 
 namespace mpfd::fdm {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
-#include "fdm_solver/tracer/parallel_for.hpp"
+#include "common/core/parallel_for.hpp"
 
 namespace mpfd::fdm {
 namespace {

@@ -3,8 +3,8 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/parallel_for.hpp"
 #include "fdm_solver/tracer/cell_lookup.hpp"
-#include "fdm_solver/tracer/parallel_for.hpp"
 
 namespace mpfd::fdm {
 
