@@ -4,8 +4,9 @@
 // state is left exactly unchanged by a sweep (every flux difference and every
 // viscous exchange is exactly zero), so the box starts around every cell that
 // differs from a neighbour or from its ghost image, and each sweep along an
-// axis grows it along that axis by the sweep's reach (kGhost cells). The
-// physical signal (CFL <= 1: at most one cell per sweep) stays inside that.
+// axis grows it along that axis by the sweep's reach (2 cells, see
+// euler_solver.cpp). The physical signal (CFL <= 1: at most one cell per
+// sweep) stays inside that.
 
 #include <array>
 

@@ -36,6 +36,13 @@ EulerState initial_state(const config::Scene& scene) {
   return s;
 }
 
+/// How far a sweep can change cells beyond the disturbed box: a cell is left
+/// bit for bit unchanged when its neighbours i-2 ... i+2 hold its own state
+/// (the viscous exchange of (2-56) multiplies a zero difference whatever the
+/// wider reach of its switch theta, so ubar_{i-1..i+1} = U_i and the two face
+/// fluxes are equal). kGhost = 3 is what the sweep reads; 2 is what it changes.
+constexpr int kChangeReach = 2;
+
 /// Below this many cells a loop runs on one thread (common/core/parallel_for.hpp).
 constexpr long long kParallelCells = kMinParallelCount;
 
@@ -146,7 +153,7 @@ void EulerSolver::advance(double dt) {
 void EulerSolver::sweep(int axis, double dt) {
   const auto& g = state_.grid;
   const auto& n = g.cells();
-  if (options_.skip_quiet) box_.grow(axis, static_cast<int>(kGhost), n[axis]);
+  if (options_.skip_quiet) box_.grow(axis, kChangeReach, n[axis]);
   if (box_.empty()) {
     count_quiet_faces(axis, dt, false, false);
     return;

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "common/core/error.hpp"
+#include "fdm_solver/tracer/empty_cell_fill.hpp"
 
 namespace mpfd::fdm {
 
@@ -22,6 +23,7 @@ MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
   tracers_ = seed_from_materials(grid_, indices, tracers_per_axis);
   bins_.rebuild(grid_, tracers_, count);
   states_ = MaterialStates(current_, density, energy);
+  fill_queue_.reserve(grid_.cell_count());
 }
 
 AdvectionReport MultiMaterialTracker::advect(const VelocityView& velocity, double dt,
@@ -29,6 +31,7 @@ AdvectionReport MultiMaterialTracker::advect(const VelocityView& velocity, doubl
   const AdvectionReport report = advect_tracers(grid_, velocity, dt, faces, tracers_);
   bins_.rebuild(grid_, tracers_, static_cast<int>(eos_.size()));
   classify_cells(grid_, bins_, tracers_, current_, next_);  // T (3-23)
+  fill_empty_cells(grid_, bins_, next_, fill_queue_);
   std::swap(current_, next_);
   assign_tracer_volumes(grid_, bins_, current_, tracers_);  // T (3-21), (3-22)
   return report;

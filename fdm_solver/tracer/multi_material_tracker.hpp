@@ -57,6 +57,7 @@ class MultiMaterialTracker {
   MaterialMap current_;
   MaterialMap next_;  // classify_cells output, swapped with current_
   MaterialStates states_;
+  std::vector<std::size_t> fill_queue_;  // scratch of fill_empty_cells
 };
 
 }  // namespace mpfd::fdm
