@@ -1,13 +1,18 @@
 // fdm_solver: the FDM Euler solver. `run SCENE --out DIR` advances a scene
-// on its own (no coupler) and writes the layout of docs/output.md.
+// on its own (no coupler) and writes the layout of docs/output.md;
+// `serve --endpoint URL` is driven step by step by a coupler (proto/README.md).
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
 #include <exception>
 #include <iostream>
+#include <zmq.hpp>
 
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
+#include "fdm_solver/serve/serve.hpp"
 #include "fdm_solver/standalone_run.hpp"
 
 int main(int argc, char** argv) {
@@ -27,10 +32,32 @@ int main(int argc, char** argv) {
   run->add_flag("--full-grid", full_grid,
                 "update every cell each step instead of only the disturbed region "
                 "(same result, for comparisons)");
+  mpfd::fdm::ServeOptions serve_options;
+  double idle_seconds = 60.0;
+  auto* serve = app.add_subcommand("serve", "answer a coupler over protocol v1 (proto/README.md)");
+  serve
+      ->add_option("--endpoint", serve_options.endpoint,
+                   "the coupler's endpoint: ipc:///path, tcp://host:port")
+      ->required();
+  serve->add_option("--name", serve_options.name, "routing id the coupler knows this solver by")
+      ->capture_default_str();
+  serve
+      ->add_option("--idle-timeout", idle_seconds,
+                   "seconds to wait for the coupler's next request before stopping with an error")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  serve->add_option("--threads", threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (threads > 0) omp_set_num_threads(threads);
+    if (*serve) {
+      serve_options.idle_timeout = std::chrono::milliseconds(std::llround(idle_seconds * 1e3));
+      zmq::context_t context;
+      mpfd::fdm::serve(context, serve_options);
+      return 0;
+    }
     options.scene_file = scene_file;
     options.out_dir = out_dir;
     options.skip_quiet = !full_grid;

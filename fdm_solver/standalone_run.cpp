@@ -18,45 +18,12 @@
 #include "common/io/snapshot_writer.hpp"
 #include "fdm_solver/cell_eos.hpp"
 #include "fdm_solver/primitive_fields.hpp"
+#include "fdm_solver/snapshot_fields.hpp"
 
 namespace mpfd::fdm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// The snapshot's cell fields, as the scene asks for them (docs/output.md).
-std::vector<io::FieldView> field_views(const config::Scene& scene, const EulerState& state,
-                                       const PrimitiveFields& p) {
-  std::vector<io::FieldView> views;
-  for (const auto field : scene.output.fields) {
-    switch (field) {
-      case config::Field::density:
-        views.push_back({"density", "kg/m^3", {state.u[kDensity]}});
-        break;
-      case config::Field::velocity:
-        views.push_back({"velocity", "m/s", {p.velocity_x, p.velocity_y, p.velocity_z}});
-        break;
-      case config::Field::pressure:
-        views.push_back({"pressure", "Pa", {p.pressure}});
-        break;
-      case config::Field::specific_internal_energy:
-        views.push_back({"specific_internal_energy", "J/kg", {p.specific_internal_energy}});
-        break;
-      case config::Field::sound_speed:
-        views.push_back({"sound_speed", "m/s", {p.sound_speed}});
-        break;
-      case config::Field::material:
-        views.push_back({"material", "", {p.material}});
-        break;
-      case config::Field::volume_fraction:
-      case config::Field::burn_fraction:
-        throw Error("scene '" + scene.name +
-                    "': output.fields: fdm_solver does not yet write volume_fraction or "
-                    "burn_fraction (multi-material tracers are not integrated); remove them");
-    }
-  }
-  return views;
-}
 
 /// Peak resident memory of this process so far [bytes].
 long long peak_memory_bytes() {
@@ -79,7 +46,10 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
                              .tracers_per_axis = scene.solver.fdm.tracers_per_axis});
   PrimitiveFields primitives;
   primitives.compute(solver.state(), solver.materials());
-  (void)field_views(scene, solver.state(), primitives);  // refuse unsupported fields up front
+  const SnapshotFields fields(solver);
+  std::vector<std::string> field_names;
+  for (const auto f : scene.output.fields) field_names.push_back(field_name(f));
+  for (const auto& name : field_names) check_field_name(name);  // before anything is written
   io::prepare_output_directory(options.out_dir, options.overwrite);
 
   const auto& grid = solver.state().grid;
@@ -144,7 +114,8 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
   };
   const auto write_output = [&] {
     primitives.compute(solver.state(), solver.materials());
-    snapshots.write(solver.steps(), solver.time(), field_views(scene, solver.state(), primitives));
+    snapshots.write(solver.steps(), solver.time(),
+                    fields.views(field_names, scene, solver, primitives));
     gauges.flush();
     write_summary("running", "");
   };

@@ -2,8 +2,10 @@
 """Plots an MPFD output folder (docs/output.md, format version 1).
 
 Writes DIR/plots/profiles.png (every scalar cell field along x through the
-grid's centre line, one curve per snapshot) and DIR/plots/gauges.png (every
-gauge quantity against time). Uses Debian's python3-numpy, -h5py, -matplotlib.
+grid's centre line, one curve per snapshot), for 2D and 3D grids also
+DIR/plots/pressure_maps.png (pressure in the mid-z plane at every snapshot,
+with the material interface), and DIR/plots/gauges.png (every gauge quantity
+against time). Uses Debian's python3-numpy, -h5py, -matplotlib.
 
 Usage: /usr/bin/python3 tools/plot_run.py DIR
 """
@@ -15,6 +17,7 @@ import h5py
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.colors  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -70,6 +73,46 @@ def plot_profiles(out_dir, plots_dir):
     return target
 
 
+def plot_pressure_maps(out_dir, plots_dir):
+    files = sorted(glob.glob(os.path.join(out_dir, "snapshots", "snapshot_*.h5")))
+    if not files:
+        return None
+    with h5py.File(files[0], "r") as h5:
+        if "pressure" not in h5["cells"] or h5["cells"]["pressure"].shape[1] < 2:
+            return None
+        origin, spacing = h5["grid"].attrs["origin"], h5["grid"].attrs["spacing"]
+        nz, ny, nx = h5["cells"]["pressure"].shape
+    extent = [origin[0] * 1e3, (origin[0] + nx * spacing[0]) * 1e3,
+              origin[1] * 1e3, (origin[1] + ny * spacing[1]) * 1e3]
+    columns = min(3, len(files))
+    rows = (len(files) + columns - 1) // columns
+    fig, axes = plt.subplots(rows, columns, figsize=(4.2 * columns, 3.6 * rows), squeeze=False)
+    for ax in axes.flat[len(files):]:
+        ax.axis("off")
+    for ax, path in zip(axes.flat, files):
+        with h5py.File(path, "r") as h5:
+            p = h5["cells"]["pressure"][nz // 2, :, :]
+            image = ax.imshow(p, origin="lower", extent=extent, cmap="inferno",
+                              norm=matplotlib.colors.LogNorm(vmin=max(p.min(), 1e3), vmax=p.max()))
+            fig.colorbar(image, ax=ax, label="pressure [Pa]")
+            if "material" in h5["cells"]:
+                m = h5["cells"]["material"][nz // 2, :, :]
+                if np.unique(m).size > 1:
+                    x = origin[0] * 1e3 + (np.arange(nx) + 0.5) * spacing[0] * 1e3
+                    y = origin[1] * 1e3 + (np.arange(ny) + 0.5) * spacing[1] * 1e3
+                    ax.contour(x, y, (m == m.flat[0]).astype(float), levels=[0.5], colors="cyan",
+                               linewidths=0.8)
+            ax.set_title(f"t = {h5.attrs['time'] * 1e6:.0f} µs")
+            ax.set_xlabel("x [mm]")
+            ax.set_ylabel("y [mm]")
+    fig.suptitle("pressure in the mid-plane (cyan: material interface)")
+    fig.tight_layout()
+    target = os.path.join(plots_dir, "pressure_maps.png")
+    fig.savefig(target, dpi=100)
+    plt.close(fig)
+    return target
+
+
 def plot_gauges(out_dir, plots_dir):
     path = os.path.join(out_dir, "gauges.h5")
     if not os.path.exists(path):
@@ -106,7 +149,8 @@ def main():
         sys.exit(f"plot_run.py: {out_dir} is not an output folder")
     plots_dir = os.path.join(out_dir, "plots")
     os.makedirs(plots_dir, exist_ok=True)
-    for target in (plot_profiles(out_dir, plots_dir), plot_gauges(out_dir, plots_dir)):
+    for target in (plot_profiles(out_dir, plots_dir), plot_pressure_maps(out_dir, plots_dir),
+                   plot_gauges(out_dir, plots_dir)):
         if target:
             print(target)
 

@@ -153,7 +153,7 @@ TEST(SceneLoader, Every_scene_in_configs_loads_and_teaches) {
 }
 
 TEST(SceneLoader, Sod_scene_holds_the_classic_states) {
-  const Scene s = load_scene(kConfigs / "sod_1d.yaml");
+  const Scene s = load_scene(kConfigs / "sod.yaml");
   EXPECT_EQ(std::get<eos::IdealGas>(s.materials.at(0).eos).gamma, 1.4);
   EXPECT_EQ(s.initial.density, 0.125);
   EXPECT_EQ(s.initial.pressure, 0.1);

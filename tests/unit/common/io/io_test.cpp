@@ -111,7 +111,7 @@ TEST_F(OutputFolder, GaugeHistoriesMatchInCsvAndHdf5) {
 }
 
 TEST_F(OutputFolder, SummaryCarriesStatusRatesAndConservationVerdict) {
-  RunSummary summary("fdm_solver", "sod_1d", "configs/sod_1d.yaml");
+  RunSummary summary("fdm_solver", "sod", "configs/sod.yaml");
   summary.set_progress(120, 2e-4, 2e-4, 0.5);
   summary.set_rate("cell_updates_per_second", 3.0e8);
   summary.set_conservation({{"mass", "kg", 1.0, 0.9, 0.1 + 1e-12}});

@@ -1,0 +1,70 @@
+#include "fdm_solver/serve/cell_region.hpp"
+
+#include <algorithm>
+
+#include "fdm_solver/serve/protocol_error.hpp"
+
+namespace mpfd::fdm {
+namespace {
+
+template <typename Values>
+std::string index_text(const Values& values) {
+  std::string text = "[";
+  for (const auto v : values) text += (text.size() > 1 ? ", " : "") + std::to_string(v);
+  return text + "]";
+}
+
+[[noreturn]] void reject(const cosim::v1::Region& region, const grid::UniformGrid& grid,
+                         const std::string& rule) {
+  throw ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+                      "Setup region '" + region.name() + "' (box lo " +
+                          index_text(region.box().lo()) + ", hi " + index_text(region.box().hi()) +
+                          "): " + rule + "; the grid's interior cells are [0, 0, 0] to " +
+                          index_text(grid.cells()) + " (exclusive)");
+}
+
+}  // namespace
+
+bool CellRegion::declares(Quantity q) const {
+  return std::find(quantities.begin(), quantities.end(), q) != quantities.end();
+}
+
+CellRegion make_cell_region(const cosim::v1::Region& region, const grid::UniformGrid& grid) {
+  if (region.name().empty()) reject(region, grid, "a region needs a name");
+  if (region.kind() != cosim::v1::REGION_KIND_CELLS)
+    reject(region, grid,
+           "kind " + cosim::v1::RegionKind_Name(region.kind()) +
+               " is not served; an FDM zone has REGION_KIND_CELLS only");
+  if (region.flat_indices_size() > 0)
+    reject(region, grid, "flat_indices are not served; give the cells as a box");
+  const auto& lo = region.box().lo();
+  const auto& hi = region.box().hi();
+  if (lo.size() != hi.size() || lo.empty() || lo.size() > 3)
+    reject(region, grid, "lo and hi must both have 1 to 3 indices");
+  CellRegion cells{region.name(), {}, {}};
+  for (int a = 0; a < 3; ++a) {
+    const long long extent = grid.cells()[a];
+    const bool given = a < lo.size();
+    const long long l = given ? lo[a] : 0;
+    const long long h = given ? hi[a] : 1;
+    if (!given && extent != 1)
+      reject(region, grid,
+             "the box leaves out axis " + std::to_string(a) + ", which has " +
+                 std::to_string(extent) + " cells");
+    if (l < 0 || h > extent || l >= h)
+      reject(region, grid,
+             "axis " + std::to_string(a) + " needs 0 <= lo < hi <= " + std::to_string(extent));
+    cells.box.lower[a] = static_cast<int>(l);
+    cells.box.upper[a] = static_cast<int>(h);
+  }
+  for (const auto& name : region.quantities()) {
+    const auto q = find_quantity(name);
+    if (!q) reject(region, grid, "unknown quantity '" + name + "'; known: " + quantity_names());
+    cells.quantities.push_back(*q);
+  }
+  if (cells.quantities.empty())
+    cells.quantities = {Quantity::rho, Quantity::momentum, Quantity::energy};
+  return cells;
+}
+
+}  // namespace mpfd::fdm

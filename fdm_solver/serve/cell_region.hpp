@@ -1,0 +1,43 @@
+#pragma once
+// A named region of FDM cells declared in Setup (proto/README.md §4): a
+// half-open index box [lo, hi) of interior cells and the quantities a coupler
+// exchanges through it. Values travel in box C order over (i, j, k): k (z)
+// varies fastest, unlike the grid's storage (x fastest).
+
+#include <string>
+#include <vector>
+
+#include "common/grid/uniform_grid.hpp"
+#include "cosim/message.hpp"
+#include "fdm_solver/active_box.hpp"
+#include "fdm_solver/serve/cell_quantities.hpp"
+
+namespace mpfd::fdm {
+
+struct CellRegion {
+  std::string name;
+  ActiveBox box;
+  std::vector<Quantity> quantities;
+
+  [[nodiscard]] std::size_t cell_count() const { return static_cast<std::size_t>(box.cells()); }
+  [[nodiscard]] bool declares(Quantity q) const;
+};
+
+/// Checks a Setup region against `grid`: kind CELLS, a box of 1 to 3 axes
+/// (axes it leaves out must have one cell) with 0 <= lo < hi <= cells, and
+/// known quantities (none given: rho, momentum, E). Throws
+/// ProtocolError{UNKNOWN_REGION} naming the region, its box and the grid.
+[[nodiscard]] CellRegion make_cell_region(const cosim::v1::Region& region,
+                                          const grid::UniformGrid& grid);
+
+/// Calls f(n, cell) for each cell of `box`: n its position in box C order,
+/// cell its index in the grid's storage order.
+template <typename F>
+void for_each_transfer_cell(const grid::UniformGrid& grid, const ActiveBox& box, F&& f) {
+  std::size_t n = 0;
+  for (int i = box.lower[0]; i < box.upper[0]; ++i)
+    for (int j = box.lower[1]; j < box.upper[1]; ++j)
+      for (int k = box.lower[2]; k < box.upper[2]; ++k) f(n++, grid.cell_index(i, j, k));
+}
+
+}  // namespace mpfd::fdm

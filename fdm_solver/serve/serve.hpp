@@ -1,0 +1,26 @@
+#pragma once
+// `fdm_solver serve`: the solver side of protocol v1 (proto/README.md) for
+// the FDM Euler solver. Connects to a coupler, then answers its requests one
+// by one until Shutdown.
+
+#include <chrono>
+#include <string>
+#include <zmq.hpp>
+
+namespace mpfd::fdm {
+
+struct ServeOptions {
+  std::string endpoint;      ///< the coupler's ROUTER: ipc://, tcp://, inproc://
+  std::string name = "fdm";  ///< routing id the coupler knows this solver by
+  std::chrono::milliseconds idle_timeout{60000};  ///< longest wait for the coupler's next request
+};
+
+/// Sends Hello, then answers Setup, Exchange, WriteOutput, Activate and Ping
+/// until Shutdown, which it acknowledges and returns from. Checkpoint, Restore
+/// and field handoffs get a non-fatal Error{UNEXPECTED}. Throws mpfd::Error —
+/// after answering the request with a fatal Error{code, message} — when the
+/// coupler refuses the version, stays silent for idle_timeout, or sends a
+/// request that cannot be carried out, and when the solver breaks down.
+void serve(zmq::context_t& context, const ServeOptions& options);
+
+}  // namespace mpfd::fdm

@@ -1,0 +1,58 @@
+#include "fdm_solver/serve/snapshot_output.hpp"
+
+#include "common/core/error.hpp"
+#include "fdm_solver/serve/protocol_error.hpp"
+#include "fdm_solver/snapshot_fields.hpp"
+
+namespace mpfd::fdm {
+namespace {
+
+/// The field check of snapshot_fields.hpp, as a protocol error.
+void check_field(const std::string& name, const std::string& source) {
+  try {
+    check_field_name(name);
+  } catch (const Error& error) {
+    throw ProtocolError(cosim::v1::ERROR_CODE_IO, source + " " + error.what());
+  }
+}
+
+}  // namespace
+
+SnapshotOutput::SnapshotOutput(std::filesystem::path out_dir, const config::Scene& scene)
+    : out_dir_(std::move(out_dir)), scene_(scene) {
+  for (const auto field : scene.output.fields) {
+    default_fields_.push_back(field_name(field));
+    check_field(default_fields_.back(), "scene output.fields:");
+  }
+}
+
+cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double time,
+                                               const cosim::v1::WriteOutput& request) {
+  if (out_dir_.empty())
+    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput: Setup gave no output_dir");
+  if (!request.directory().empty() && std::filesystem::path(request.directory()) != out_dir_)
+    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput directory '" + request.directory() +
+                                                      "' differs from Setup's output_dir '" +
+                                                      out_dir_.string() +
+                                                      "'; fdm_solver writes one");
+  for (const auto& name : request.fields()) check_field(name, "WriteOutput");
+  primitives_.compute(solver.state(), solver.materials());
+  const std::vector<std::string> names =
+      request.fields().empty()
+          ? default_fields_
+          : std::vector<std::string>(request.fields().begin(), request.fields().end());
+  if (!fields_) fields_.emplace(solver);
+  const std::vector<io::FieldView> views = fields_->views(names, scene_, solver, primitives_);
+  cosim::v1::OutputWritten written;
+  try {
+    if (!writer_) writer_.emplace(out_dir_, solver.state().grid);
+    written.add_files(writer_->write(solver.steps(), time, views).string());
+  } catch (const std::exception& error) {
+    throw ProtocolError(cosim::v1::ERROR_CODE_IO,
+                        "WriteOutput into '" + out_dir_.string() + "' failed: " + error.what());
+  }
+  written.add_files((out_dir_ / "cells.xmf").string());
+  return written;
+}
+
+}  // namespace mpfd::fdm
