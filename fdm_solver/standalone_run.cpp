@@ -112,10 +112,19 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_status(status, error);
     summary.write(options.out_dir / "summary.json");
   };
+  std::vector<double> tracer_material;  // tracers' material index as numbers, for output
   const auto write_output = [&] {
     primitives.compute(solver.state(), solver.materials());
+    std::vector<io::FieldView> tracer_fields;
+    if (const auto* tracker = solver.tracker()) {  // the tracers, as particles (docs/output.md)
+      const TracerSet& t = tracker->tracers();
+      tracer_material.assign(t.material.begin(), t.material.end());
+      tracer_fields = {{"position", "m", {t.position[0], t.position[1], t.position[2]}},
+                       {"material", "", {tracer_material}},
+                       {"volume", "m^3", {t.volume}}};
+    }
     snapshots.write(solver.steps(), solver.time(),
-                    fields.views(field_names, scene, solver, primitives));
+                    fields.views(field_names, scene, solver, primitives), tracer_fields);
     gauges.flush();
     write_summary("running", "");
   };

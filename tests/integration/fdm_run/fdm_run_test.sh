@@ -36,6 +36,11 @@ check "a throughput is reported" test "$(json "$work/sod/summary.json" 'd["rates
 steps=$(json "$work/sod/summary.json" 'd["steps"]')
 check "gauges are sampled at every step" test "$(($(wc -l <"$work/sod/gauges.csv") - 1))" -ge "$steps"
 
+# Two materials: the tracers are written as particles.
+"$solver" run "$root/configs/jwl_air_tube.yaml" --out "$work/tube" >"$work/tube.out" 2>&1
+check "the two-material tube runs" test $? -eq 0
+check "its tracers are in particles.xmf" grep -q "/particles/position" "$work/tube/particles.xmf"
+
 # The same folder again: refused, the first run kept.
 before=$(sha256sum "$work/sod/summary.json")
 "$solver" run "$root/configs/sod.yaml" --out "$work/sod" >"$work/again.out" 2>&1
