@@ -5,7 +5,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
-#include "common/eos/parameter_check.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::eos {
 namespace {
@@ -65,7 +65,7 @@ ChapmanJouguetState chapman_jouguet_state(const Jwl& eos) {
   }
   if (!(least_slope < std::numeric_limits<double>::infinity())) {
     throw Error("jwl: the products' Hugoniot has no Chapman-Jouguet point for V in (" +
-                format_parameter(v_pole) + ", 1): check a, b, r1, r2, omega and detonation_energy");
+                shortest_text(v_pole) + ", 1): check a, b, r1, r2, omega and detonation_energy");
   }
   // Bisection on the sign of the residual, down to adjacent doubles.
   for (double mid = 0.5 * (lo + hi); mid > lo && mid < hi; mid = 0.5 * (lo + hi)) {

@@ -3,13 +3,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/core/require.hpp"
+
 namespace mpfd::io {
 namespace {
 
 std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
+  return number_text(x, 17);
 }
 
 void open_document(std::ostringstream& x, const char* name) {

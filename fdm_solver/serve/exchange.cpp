@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/core/require.hpp"
 #include "fdm_solver/serve/gauge_sampler.hpp"
 #include "fdm_solver/serve/protocol_error.hpp"
 #include "fdm_solver/serve/region_transfer.hpp"
@@ -12,24 +13,18 @@
 namespace mpfd::fdm {
 namespace {
 
-std::string exact(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 cosim::v1::AdvanceResult advance(ServedZone& zone, const cosim::v1::Advance& op) {
   const double dt = op.dt();
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                        "Advance dt must be positive and finite, got " + exact(dt) + " s");
+                        "Advance dt must be positive and finite, got " + shortest_text(dt) + " s");
   const double now = zone.time();
   if (std::abs(op.time() - now) >
       kTimeTolerance * std::max({std::abs(op.time()), std::abs(now), dt}))
     throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "Advance from time " + exact(op.time()) + " s, but the solver is at " +
-                            exact(now) + " s (after " + std::to_string(zone.solver.steps()) +
-                            " steps)");
+                        "Advance from time " + shortest_text(op.time()) +
+                            " s, but the solver is at " + shortest_text(now) + " s (after " +
+                            std::to_string(zone.solver.steps()) + " steps)");
   const auto start = std::chrono::steady_clock::now();
   try {
     zone.solver.advance(dt);

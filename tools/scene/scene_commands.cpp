@@ -6,6 +6,7 @@
 #include <string>
 #include <variant>
 
+#include "common/core/require.hpp"
 #include "common/eos/jwl_cj.hpp"
 #include "common/initial/initial_cells.hpp"
 #include "common/io/gauge_recorder.hpp"
@@ -17,9 +18,7 @@ namespace mpfd::tools {
 namespace {
 
 std::string sci(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", x);
-  return text;
+  return number_text(x, 4);
 }
 
 std::string vec(const grid::Vec3& v) {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "tests/verification/support/require.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::verification {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
-#include "tests/verification/support/require.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::verification {
 namespace {
@@ -75,7 +75,7 @@ ExactRiemann::ExactRiemann(PrimitiveState left, PrimitiveState right, double gam
   const double du = right.velocity - left.velocity;
   const double du_critical = 2.0 * (sound_speed_left_ + sound_speed_right_) / (gamma - 1.0);
   require(du_critical > du, where, "u_R - u_L", du,
-          "< 2 (a_L + a_R) / (gamma - 1) = " + format_number(du_critical) +
+          "< 2 (a_L + a_R) / (gamma - 1) = " + shortest_text(du_critical) +
               " (pressure positivity, Toro (4.40); vacuum is generated)");
 
   const double p_floor = kRelativeTolerance * std::min(left.pressure, right.pressure);
@@ -96,7 +96,7 @@ ExactRiemann::ExactRiemann(PrimitiveState left, PrimitiveState right, double gam
     throw Error(
         "ExactRiemann: Newton iteration for the star pressure did not reach relative "
         "change 1e-12 in " +
-        std::to_string(kMaxNewtonIterations) + " iterations (last p = " + format_number(p) + ")");
+        std::to_string(kMaxNewtonIterations) + " iterations (last p = " + shortest_text(p) + ")");
   }
   star_pressure_ = p;
   const PressureFunction fl = side_function(p, left, sound_speed_left_, gamma);

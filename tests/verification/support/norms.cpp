@@ -4,7 +4,7 @@
 #include <numbers>
 #include <vector>
 
-#include "tests/verification/support/require.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::verification {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
-#include "tests/verification/support/require.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::verification {
 namespace {
@@ -107,7 +107,7 @@ SedovSolution::SedovSolution(double gamma, int nu) : gamma_(gamma), nu_(nu) {
   };
   const auto fail = [&](std::string_view what) {
     throw Error("SedovSolution: " + std::string(what) +
-                " at lambda = " + format_number(std::exp(s)) + " (gamma = " + format_number(gamma) +
+                " at lambda = " + shortest_text(std::exp(s)) + " (gamma = " + shortest_text(gamma) +
                 ", nu = " + std::to_string(nu) + ")");
   };
   record();

@@ -1,12 +1,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd {
 namespace {
@@ -64,6 +66,34 @@ TEST(Logger, LineCarriesSeverityModuleAndText) {
   std::cerr.rdbuf(old);
   EXPECT_THAT(captured.str(), HasSubstr("[warn] fdm.scheme: density 1.5 kg/m^3"));
   EXPECT_THAT(captured.str(), ::testing::MatchesRegex("^[0-9]{4}-[0-9]{2}-[0-9]{2}T.*Z .*\n$"));
+}
+
+}  // namespace
+}  // namespace mpfd
+
+namespace mpfd {
+namespace {
+
+TEST(Require, MessageNamesWhereWhatRuleAndValue) {
+  try {
+    require(0.9 > 1.0, "ideal_gas", "gamma", 0.9, "> 1");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "ideal_gas: gamma must be > 1, got 0.9");
+  }
+}
+
+TEST(Require, NanAndInfinityAlwaysFail) {
+  EXPECT_THROW(require(true, "jwl", "a", std::nan(""), "finite"), Error);
+  EXPECT_THROW(require(true, "jwl", "a", 1.0 / 0.0, "finite"), Error);
+  EXPECT_NO_THROW(require(true, "jwl", "a", 3.712e11, "> 0"));
+}
+
+TEST(NumberText, ShortestTextReadsBackExactlyAndNumberTextRounds) {
+  EXPECT_EQ(shortest_text(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(std::stod(shortest_text(2.0 / 3.0)), 2.0 / 3.0);
+  EXPECT_EQ(number_text(0.1 + 0.2, 4), "0.3");
+  EXPECT_EQ(number_text(20.984e9, 4), "2.098e+10");
 }
 
 }  // namespace
