@@ -96,18 +96,39 @@ EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
 }
 
 double EulerSolver::line_limit(std::size_t start) const {
-  // min over the x-line at `start` of dx_a / (|u_a| + c) over active axes.
+  // min over the x-line at `start` of dx_a / (|u_a| + c) over active axes,
+  // with one EOS dispatch per line when it holds one material.
   const auto& g = state_.grid;
-  const std::size_t nx = static_cast<std::size_t>(g.cells()[0]);
+  const std::size_t end = start + static_cast<std::size_t>(g.cells()[0]);
+  const auto& u = state_.u;
+  const auto& mat = state_.material;
   double limit = std::numeric_limits<double>::infinity();
-  for (std::size_t i = start; i < start + nx; ++i) {
-    const double rho = state_.u[kDensity][i];
-    const double m[3] = {state_.u[kMomentumX][i], state_.u[kMomentumY][i], state_.u[kMomentumZ][i]};
-    const double e =
-        (state_.u[kEnergy][i] - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
-    const double c = cell_sound_speed(state_, eos_, i, rho, e);
-    for (int a = 0; a < 3; ++a)
-      if (g.is_active(a)) limit = std::min(limit, g.spacing()[a] / (std::abs(m[a] / rho) + c));
+  const auto scan = [&](const auto& sound_speed_at, std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const double rho = u[kDensity][i];
+      const double m[3] = {u[kMomentumX][i], u[kMomentumY][i], u[kMomentumZ][i]};
+      const double e =
+          (u[kEnergy][i] - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
+      const double c = sound_speed_at(i, rho, e);
+      for (int a = 0; a < 3; ++a)
+        if (g.is_active(a)) limit = std::min(limit, g.spacing()[a] / (std::abs(m[a] / rho) + c));
+    }
+  };
+  const bool one_material =
+      mat[start] != kMixedMaterial && std::all_of(mat.begin() + static_cast<std::ptrdiff_t>(start),
+                                                  mat.begin() + static_cast<std::ptrdiff_t>(end),
+                                                  [&](std::uint8_t m) { return m == mat[start]; });
+  if (one_material) {
+    std::visit(
+        [&](const auto& model) {
+          scan([&](std::size_t, double rho, double e) { return model.sound_speed(rho, e); }, start,
+               end);
+        },
+        eos_[mat[start]]);
+  } else {
+    scan([&](std::size_t i, double rho,
+             double e) { return cell_sound_speed(state_, eos_, i, rho, e); },
+         start, end);
   }
   return limit;
 }
@@ -297,6 +318,30 @@ EulerState& EulerSolver::state_for_update(const ActiveBox& region) {
     }
   }
   return state_;
+}
+
+void EulerSolver::restore(const EulerState& state, double time, std::int64_t steps,
+                          const Totals& outflow) {
+  if (tracker_)
+    throw Error("fdm_solver: restore of a multi-material state (tracers) is not supported");
+  const std::size_t cells = state_.grid.cell_count();
+  if (state.grid.cells() != state_.grid.cells() || state.material.size() != cells ||
+      state.mix_gamma.size() != state_.mix_gamma.size() ||
+      state.mix_pinf.size() != state_.mix_pinf.size() ||
+      std::any_of(state.u.begin(), state.u.end(),
+                  [&](const std::vector<double>& v) { return v.size() != cells; }))
+    throw Error("fdm_solver: restored state does not match the solver's grid of " +
+                std::to_string(cells) + " cells");
+  state_.u = state.u;
+  state_.material = state.material;
+  state_.mix_gamma = state.mix_gamma;
+  state_.mix_pinf = state.mix_pinf;
+  time_ = time;
+  steps_ = steps;
+  outflow_ = outflow;
+  // Exactness over speed: every cell is updated from here on (skip_quiet would
+  // need the still region, which a checkpoint does not record).
+  box_ = whole_grid(state_.grid);
 }
 
 Totals EulerSolver::totals() const {

@@ -12,6 +12,46 @@ constexpr std::size_t kSlot[3][5] = {
     {kDensity, kMomentumZ, kMomentumX, kMomentumY, kEnergy},
 };
 
+/// Copies cells [lo, hi) of every lane of the block from `src` (the state
+/// array at the block's start) into the pencil buffer `dst`. Contiguous runs
+/// (lanes adjacent in memory, or a single x-line) are copied as runs.
+template <class T>
+void copy_in(const T* src, const PencilBlock& block, std::size_t lo, std::size_t hi, T* dst) {
+  const std::size_t lanes = block.lanes;
+  if (lanes == 1 && block.stride == 1) {
+    std::copy(src + lo, src + hi, dst + lo + kGhost);
+    return;
+  }
+  if (lanes == kMaxLanes && block.lane_stride == 1) {  // a full block: fixed-size moves
+    for (std::size_t i = lo; i < hi; ++i)
+      for (std::size_t w = 0; w < kMaxLanes; ++w)
+        dst[(i + kGhost) * kMaxLanes + w] = src[i * block.stride + w];
+    return;
+  }
+  for (std::size_t i = lo; i < hi; ++i)
+    for (std::size_t w = 0; w < lanes; ++w)
+      dst[(i + kGhost) * lanes + w] = src[i * block.stride + w * block.lane_stride];
+}
+
+/// The inverse of copy_in for cells [lo, hi).
+void copy_out(const double* src, const PencilBlock& block, std::size_t lo, std::size_t hi,
+              double* dst) {
+  const std::size_t lanes = block.lanes;
+  if (lanes == 1 && block.stride == 1) {
+    std::copy(src + lo + kGhost, src + hi + kGhost, dst + lo);
+    return;
+  }
+  if (lanes == kMaxLanes && block.lane_stride == 1) {  // a full block: fixed-size moves
+    for (std::size_t i = lo; i < hi; ++i)
+      for (std::size_t w = 0; w < kMaxLanes; ++w)
+        dst[i * block.stride + w] = src[(i + kGhost) * kMaxLanes + w];
+    return;
+  }
+  for (std::size_t i = lo; i < hi; ++i)
+    for (std::size_t w = 0; w < lanes; ++w)
+      dst[i * block.stride + w * block.lane_stride] = src[(i + kGhost) * lanes + w];
+}
+
 bool is_mirror(config::BoundaryKind kind) {
   return kind != config::BoundaryKind::outflow;
 }
@@ -37,26 +77,12 @@ void gather(const EulerState& state, const PencilBlock& block, AxisBoundaries fa
   // Interior cells that exist within the stencil of [first, last).
   const std::size_t lo = first >= kGhost ? first - kGhost : 0;
   const std::size_t hi = std::min(last + kGhost, block.length);
-  for (std::size_t s = 0; s < 5; ++s) {
-    const double* src = state.u[kSlot[block.axis][s]].data() + block.start;
-    double* dst = pencil.u[s].data();
-    for (std::size_t i = lo; i < hi; ++i)
-      for (std::size_t w = 0; w < lanes; ++w)
-        dst[(i + kGhost) * lanes + w] = src[i * block.stride + w * block.lane_stride];
-  }
-  const std::uint8_t* mat = state.material.data() + block.start;
-  for (std::size_t i = lo; i < hi; ++i)
-    for (std::size_t w = 0; w < lanes; ++w)
-      pencil.material[(i + kGhost) * lanes + w] = mat[i * block.stride + w * block.lane_stride];
+  for (std::size_t s = 0; s < 5; ++s)
+    copy_in(state.u[kSlot[block.axis][s]].data() + block.start, block, lo, hi, pencil.u[s].data());
+  copy_in(state.material.data() + block.start, block, lo, hi, pencil.material.data());
   if (!state.mix_gamma.empty()) {
-    const double* gamma = state.mix_gamma.data() + block.start;
-    const double* pinf = state.mix_pinf.data() + block.start;
-    for (std::size_t i = lo; i < hi; ++i)
-      for (std::size_t w = 0; w < lanes; ++w) {
-        const std::size_t from = i * block.stride + w * block.lane_stride;
-        pencil.mix_gamma[(i + kGhost) * lanes + w] = gamma[from];
-        pencil.mix_pinf[(i + kGhost) * lanes + w] = pinf[from];
-      }
+    copy_in(state.mix_gamma.data() + block.start, block, lo, hi, pencil.mix_gamma.data());
+    copy_in(state.mix_pinf.data() + block.start, block, lo, hi, pencil.mix_pinf.data());
   }
 
   // Ghosts where the stencil passes a domain face.
@@ -77,14 +103,9 @@ void gather(const EulerState& state, const PencilBlock& block, AxisBoundaries fa
 
 void scatter(const Pencil& pencil, const PencilBlock& block, std::size_t first, std::size_t last,
              EulerState& state) {
-  const std::size_t lanes = block.lanes;
-  for (std::size_t s = 0; s < 5; ++s) {
-    double* dst = state.u[kSlot[block.axis][s]].data() + block.start;
-    const double* src = pencil.u[s].data();
-    for (std::size_t i = first; i < last; ++i)
-      for (std::size_t w = 0; w < lanes; ++w)
-        dst[i * block.stride + w * block.lane_stride] = src[(i + kGhost) * lanes + w];
-  }
+  for (std::size_t s = 0; s < 5; ++s)
+    copy_out(pencil.u[s].data(), block, first, last,
+             state.u[kSlot[block.axis][s]].data() + block.start);
 }
 
 }  // namespace mpfd::fdm

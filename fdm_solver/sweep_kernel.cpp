@@ -110,6 +110,27 @@ bool physical(const Pencil& p, const EosView& eos, std::size_t j) {
   return eos.material[j] != kMixedMaterial || pressure_of(eos, j, rho, internal / rho) > 0.0;
 }
 
+/// True if every entry of [begin, end) passes physical(): a vectorised scan
+/// for the common case, so the per-entry test runs only where one fails.
+bool all_physical(const Pencil& p, const EosView& eos, std::size_t begin, std::size_t end) {
+  const double* rho = p.u[kRho].data();
+  const double* mn = p.u[kMn].data();
+  const double* mt1 = p.u[kMt1].data();
+  const double* mt2 = p.u[kMt2].data();
+  const double* e_total = p.u[kE].data();
+  int bad = 0;
+#pragma omp simd reduction(+ : bad)
+  for (std::size_t j = begin; j < end; ++j) {
+    const double internal =
+        e_total[j] - 0.5 * (mn[j] * mn[j] + mt1[j] * mt1[j] + mt2[j] * mt2[j]) / rho[j];
+    bad += !(rho[j] > 0.0) | !(internal > 0.0) | (eos.material[j] == kMixedMaterial);
+  }
+  if (bad == 0) return true;
+  for (std::size_t j = begin; j < end; ++j)
+    if (!physical(p, eos, j)) return false;
+  return true;
+}
+
 /// Rusanov (local Lax-Friedrichs) flux of the face between entries j and
 /// j + w from the viscous states ubar, written into the flux arrays:
 /// F = (F(U_L) + F(U_R))/2 - s (U_R - U_L)/2, s = max(|u| + c) of the two.
@@ -139,6 +160,7 @@ void rusanov_face(Pencil& p, const EosView& eos, std::size_t j, std::size_t w) {
 /// anything (the caller repeats, for cells whose new face flux hurt them).
 bool repair_unphysical_cells(Pencil& p, const EosView& eos, std::size_t w, std::size_t begin,
                              std::size_t end, double courant) {
+  if (all_physical(p, eos, begin, end)) return false;
   bool changed = false;
   for (std::size_t j = begin; j < end; ++j) {
     if (physical(p, eos, j)) continue;
