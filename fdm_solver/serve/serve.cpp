@@ -6,6 +6,7 @@
 
 #include "common/core/log.hpp"
 #include "cosim/participant.hpp"
+#include "fdm_solver/serve/checkpoint.hpp"
 #include "fdm_solver/serve/exchange.hpp"
 #include "fdm_solver/serve/protocol_error.hpp"
 #include "fdm_solver/serve/served_zone.hpp"
@@ -21,7 +22,7 @@ cosim::v1::Hello hello() {
   hello.set_software("mpfd fdm_solver");
   hello.set_min_major(cosim::protocol_major);
   hello.set_max_major(cosim::protocol_major);
-  for (const char* capability : {"cell_regions", "gauges", "write_output"})
+  for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint"})
     hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
@@ -33,14 +34,13 @@ cosim::v1::Hello hello() {
 cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& request) {
   const auto& header = request.header;
   const std::string_view body = cosim::body_name(header);  // only for messages
-  if (header.has_checkpoint() || header.has_restore() || header.has_field_export() ||
-      header.has_field_chunk() || header.has_field_import_commit())
+  if (header.has_field_export() || header.has_field_chunk() || header.has_field_import_commit())
     throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
                         "fdm_solver serve does not support '" + std::string(body) +
                             "' (not in its Hello capabilities); the solver carries on",
                         false);
   if (!header.has_setup() && !header.has_exchange() && !header.has_write_output() &&
-      !header.has_activate())
+      !header.has_checkpoint() && !header.has_restore() && !header.has_activate())
     throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
                         "'" + std::string(body) + "' is not a request to a solver");
   if (header.has_setup() == (zone != nullptr))
@@ -58,6 +58,10 @@ cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& r
   } else if (header.has_write_output()) {
     *reply.header.mutable_output_written() =
         zone->output.write(zone->solver, zone->time(), header.write_output());
+  } else if (header.has_checkpoint()) {
+    *reply.header.mutable_checkpoint_written() = write_checkpoint(*zone, header.checkpoint());
+  } else if (header.has_restore()) {
+    *reply.header.mutable_restored() = restore_checkpoint(*zone, header.restore());
   } else {
     reply.header.mutable_activate_ack()->set_stable_dt(zone->solver.stable_dt());
   }

@@ -15,9 +15,11 @@ struct ServeOptions {
   std::chrono::milliseconds idle_timeout{60000};  ///< longest wait for the coupler's next request
 };
 
-/// Sends Hello, then answers Setup, Exchange, WriteOutput, Activate and Ping
-/// until Shutdown, which it acknowledges and returns from. Checkpoint, Restore
-/// and field handoffs get a non-fatal Error{UNEXPECTED}. Throws mpfd::Error —
+/// Sends Hello, then answers Setup, Exchange, WriteOutput, Checkpoint,
+/// Restore, Activate and Ping until Shutdown, which it acknowledges and
+/// returns from. Field handoffs get a non-fatal Error{UNEXPECTED}; a
+/// Checkpoint or Restore that fails gets a non-fatal Error and leaves the
+/// state as it was (checkpoint.hpp). Throws mpfd::Error —
 /// after answering the request with a fatal Error{code, message} — when the
 /// coupler refuses the version, stays silent for idle_timeout, or sends a
 /// request that cannot be carried out, and when the solver breaks down.

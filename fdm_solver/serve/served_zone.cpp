@@ -44,6 +44,8 @@ void check_zone_grid(const cosim::v1::UniformGrid& zone, const grid::UniformGrid
 
 ServedZone::ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup)
     : scene(std::move(scene_in)),
+      scene_text(setup.scene_fragment()),
+      output_dir(setup.output_dir()),
       solver(scene, {.cfl = scene.time.cfl,
                      .viscosity = scene.solver.fdm.artificial_viscosity,
                      .tracers_per_axis = scene.solver.fdm.tracers_per_axis}),

@@ -2,6 +2,7 @@
 // The FDM zone a coupler set up (proto/README.md §5 Setup): the scene, the
 // solver built from it, the named cell regions and the snapshot output.
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -18,6 +19,8 @@ struct ServedZone {
   ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup);
 
   config::Scene scene;
+  std::string scene_text;            ///< Setup.scene_fragment, kept for checkpoints
+  std::filesystem::path output_dir;  ///< Setup.output_dir (may be empty)
   EulerSolver solver;
   std::map<std::string, CellRegion, std::less<>> regions;
   SnapshotOutput output;

@@ -72,14 +72,14 @@ TEST(FdmServeErrors, NegativeDensityBreaksTheAdvanceAndIsReportedAsNumerical) {
   EXPECT_THAT(fdm.stop_reason(), HasSubstr("ERROR_CODE_NUMERICAL"));
 }
 
-TEST(FdmServeErrors, CheckpointIsRefusedAsUnsupportedAndTheSolverCarriesOn) {
+TEST(FdmServeErrors, FieldExportIsRefusedAsUnsupportedAndTheSolverCarriesOn) {
   ServedFdm fdm;
   fdm.request(setup(sod_text(100), {}));
-  cosim::Message checkpoint;
-  checkpoint.header.mutable_checkpoint()->set_path("/tmp/never-written");
+  cosim::Message field_export;
+  field_export.header.mutable_field_export()->set_transfer_id("never");
   EXPECT_THAT(
-      fdm.refusal(std::move(checkpoint)),
-      AllOf(HasSubstr("ERROR_CODE_UNEXPECTED"), HasSubstr("does not support 'checkpoint'")));
+      fdm.refusal(std::move(field_export)),
+      AllOf(HasSubstr("ERROR_CODE_UNEXPECTED"), HasSubstr("does not support 'field_export'")));
   cosim::Message exchange;
   exchange.header.mutable_exchange()->add_operations()->mutable_propose_dt();
   EXPECT_GT(
