@@ -70,6 +70,11 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
                             {"velocity_x", "m/s"},
                             {"velocity_y", "m/s"},
                             {"velocity_z", "m/s"}});
+  // Room for every sample up front: recording must not allocate inside the step loop.
+  const double expected_samples = scene.output.gauge_interval
+                                      ? scene.time.end / *scene.output.gauge_interval + 2.0
+                                      : static_cast<double>(scene.time.max_steps) + 1.0;
+  gauges.reserve(static_cast<std::size_t>(std::min(expected_samples, 1.0e6)));
   std::vector<double> sample(5 * gauge_cells.size());
   const auto record_gauges = [&] {
     // Gauges read the cell that holds them; only their cells need primitives.
