@@ -7,6 +7,7 @@
 #include "common/core/error.hpp"
 #include "cosim/codec.hpp"
 #include "cosim/endpoint.hpp"
+#include "cosim/large_frames.hpp"
 #include "cosim/recorder.hpp"
 
 namespace mpfd::cosim {
@@ -23,6 +24,7 @@ std::chrono::milliseconds remaining(Clock::time_point deadline) {
 
 Hub::Hub(zmq::context_t& context, std::string_view bind_endpoint, TransportOptions options)
     : socket_(context, zmq::socket_type::router), options_(options) {
+  keep_large_frames_in_heap();
   const Endpoint endpoint = parse_endpoint(bind_endpoint);
   apply_options(socket_, options_);
   socket_.set(zmq::sockopt::router_mandatory, 1);

@@ -6,6 +6,7 @@
 #include "common/core/error.hpp"
 #include "cosim/codec.hpp"
 #include "cosim/endpoint.hpp"
+#include "cosim/large_frames.hpp"
 #include "cosim/recorder.hpp"
 
 namespace mpfd::cosim {
@@ -13,6 +14,7 @@ namespace mpfd::cosim {
 Participant::Participant(zmq::context_t& context, std::string_view coupler_endpoint,
                          std::string name, TransportOptions options)
     : socket_(context, zmq::socket_type::dealer), options_(options), name_(std::move(name)) {
+  keep_large_frames_in_heap();
   const Endpoint endpoint = parse_endpoint(coupler_endpoint);
   if (name_.empty()) throw Error("a participant needs a non-empty name (routing id)");
   endpoint_ = endpoint.text;
