@@ -151,6 +151,17 @@ double EulerSolver::stable_dt() const {
   return 2.0 * options_.cfl * limit;
 }
 
+double EulerSolver::step_toward(double target) const {
+  const double dt = stable_dt();
+  const double left = target - time_;
+  if (left <= dt) return left;
+  return left < 2.0 * dt ? 0.5 * left : dt;
+}
+
+void EulerSolver::advance_to(double end) {
+  while (time_ < end) advance(step_toward(end));
+}
+
 void EulerSolver::advance(double dt) {
   MPFD_ASSERT(dt > 0.0 && std::isfinite(dt), "time step must be positive and finite");
   const auto& g = state_.grid;

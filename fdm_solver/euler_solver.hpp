@@ -37,6 +37,11 @@ class EulerSolver {
   /// The largest stable step [s]: each of the split half-step sweeps keeps
   /// (|u| + c) (dt/2) / dx <= cfl on every cell and active axis.
   [[nodiscard]] double stable_dt() const;
+  /// stable_dt(), shortened so that `target` [s] is reached exactly and no
+  /// sliver of a step is left before it (the last two steps split the rest).
+  [[nodiscard]] double step_toward(double target) const;
+  /// Advances by step_toward(end) until time() == end.
+  void advance_to(double end);
   /// One step of (2-52): sweeps z y x x y z, each over dt/2. Throws
   /// mpfd::Error naming the cell, position, time and values if a density or
   /// pressure stops being positive and finite.

@@ -154,13 +154,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
         throw Error("fdm_solver: reached time.max_steps = " + std::to_string(scene.time.max_steps) +
                     " at t = " + std::to_string(solver.time()) + " s of " + std::to_string(end) +
                     " s; raise time.max_steps or coarsen the grid");
-      // Land exactly on output and end times; never leave a sliver of a step.
-      double dt = solver.stable_dt();
-      const double left = std::min(next_output, end) - solver.time();
-      if (left <= dt)
-        dt = left;
-      else if (left < 2.0 * dt)
-        dt = 0.5 * left;
+      const double dt = solver.step_toward(std::min(next_output, end));  // land on output times
       const auto step_start = Clock::now();
       solver.advance(dt);
       solver_seconds += std::chrono::duration<double>(Clock::now() - step_start).count();

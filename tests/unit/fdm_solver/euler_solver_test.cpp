@@ -65,7 +65,7 @@ TEST(EulerSolver, SodAlongXYZGivesTheSameProfileBitForBit) {
   std::vector<double> profiles[3];
   for (int axis = 0; axis < 3; ++axis) {
     EulerSolver solver(sod_tube(axis, 100), {});
-    while (solver.time() < 0.2) solver.advance(std::min(solver.stable_dt(), 0.2 - solver.time()));
+    solver.advance_to(0.2);
     profiles[axis] = solver.state().u[kDensity];
   }
   EXPECT_EQ(profiles[1], profiles[0]);
@@ -193,6 +193,27 @@ TEST(EulerSolver, DataWrittenFromOutsideJoinsTheDisturbedRegion) {
     full.advance(dt);
   }
   for (std::size_t v = 0; v < kVariables; ++v) EXPECT_EQ(skipping.state().u[v], full.state().u[v]);
+}
+
+}  // namespace
+}  // namespace mpfd::fdm
+
+namespace mpfd::fdm {
+namespace {
+
+TEST(EulerSolver, StepsLandExactlyOnATargetWithoutASliver) {
+  EulerSolver solver(testing::sod_tube(0, 100), {});
+  const double full = solver.stable_dt();
+  const double target = 2.5 * full;  // two stable steps would leave half a step
+  double smallest = full;
+  while (solver.time() < target) {
+    const double dt = solver.step_toward(target);
+    EXPECT_LE(dt, solver.stable_dt());
+    smallest = std::min(smallest, dt);
+    solver.advance(dt);
+  }
+  EXPECT_EQ(solver.time(), target);
+  EXPECT_GT(smallest, 0.4 * full);  // the rest was split in two, not left as a sliver
 }
 
 }  // namespace

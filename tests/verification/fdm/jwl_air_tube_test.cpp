@@ -72,12 +72,7 @@ TubeResult run_tube(int cells) {
                              .tracers_per_axis = scene.solver.fdm.tracers_per_axis});
   const Totals start = solver.totals();
   const double end = scene.time.end;
-  while (solver.time() < end) {
-    const double left = end - solver.time();
-    double dt = solver.stable_dt();
-    dt = left <= dt ? left : (left < 2 * dt ? 0.5 * left : dt);
-    solver.advance(dt);
-  }
+  solver.advance_to(end);
   PrimitiveFields p;
   p.compute(solver.state(), solver.materials());
   const auto& rho = solver.state().u[kDensity];
