@@ -13,8 +13,7 @@ bool same_state(const EulerState& s, std::size_t a, std::size_t b) {
 
 /// True if the cell differs from its mirror image (normal momentum reversed).
 bool moves_through_wall(const EulerState& s, std::size_t cell, int axis) {
-  const double normal = s.u[kMomentumX + static_cast<std::size_t>(axis)][cell];
-  return normal != -normal;
+  return s.u[kMomentumX + static_cast<std::size_t>(axis)][cell] != 0.0;
 }
 
 }  // namespace

@@ -46,12 +46,6 @@ constexpr int kChangeReach = 2;
 /// Below this many cells a loop runs on one thread (common/core/parallel_for.hpp).
 constexpr long long kParallelCells = kMinParallelCount;
 
-double specific_energy(const EulerState& s, std::size_t c) {
-  const double rho = s.u[kDensity][c];
-  const double mx = s.u[kMomentumX][c], my = s.u[kMomentumY][c], mz = s.u[kMomentumZ][c];
-  return (s.u[kEnergy][c] - 0.5 * (mx * mx + my * my + mz * mz) / rho) / rho;
-}
-
 std::string position_text(const grid::Vec3& x) {
   return "(" + std::to_string(x[0]) + ", " + std::to_string(x[1]) + ", " + std::to_string(x[2]) +
          ") m";
@@ -76,7 +70,7 @@ EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
     energy_.assign(cells, 0.0);
     pressure_.assign(cells, 0.0);
     const std::vector<double> material(m.begin(), m.end());
-    for (std::size_t c = 0; c < cells; ++c) energy_[c] = specific_energy(state_, c);
+    parallel_for(cells, [&](std::size_t c) { energy_[c] = specific_internal_energy(state_, c); });
     tracker_.emplace(state_.grid, eos_, material, state_.u[kDensity], energy_,
                      options_.tracers_per_axis);
     for (int f = 0; f < 6; ++f)
@@ -167,15 +161,17 @@ void EulerSolver::advance(double dt) {
   const auto& g = state_.grid;
   if (tracker_) {  // tracers move with the velocities of time level n, T (3-13)
     const auto& u = state_.u;
-    for (std::size_t c = 0; c < g.cell_count(); ++c)
+    parallel_for(g.cell_count(), [&](std::size_t c) {
       for (std::size_t a = 0; a < 3; ++a) velocity_[a][c] = u[kMomentumX + a][c] / u[kDensity][c];
+    });
     tracker_->advect(VelocityView{{velocity_[0], velocity_[1], velocity_[2]}}, dt, tracer_faces_);
   }
   // T (2-52): U^{n+1} = Lz Ly Lx Lx Ly Lz U^n, each over dt/2; the rightmost acts first.
   for (const int axis : {2, 1, 0, 0, 1, 2})
     if (g.is_active(axis)) sweep(axis, 0.5 * dt);
   if (tracker_) {
-    for (std::size_t c = 0; c < g.cell_count(); ++c) energy_[c] = specific_energy(state_, c);
+    parallel_for(g.cell_count(),
+                 [&](std::size_t c) { energy_[c] = specific_internal_energy(state_, c); });
     update_materials();
   }
   time_ += dt;
@@ -274,11 +270,14 @@ void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, boo
   if (!g.is_active(axis)) return;
   const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
   const double impulse = dt * g.spacing()[a1] * g.spacing()[a2];
+  const bool covers_face = box_.lower[a1] == 0 && box_.upper[a1] == g.cells()[a1] &&
+                           box_.lower[a2] == 0 && box_.upper[a2] == g.cells()[a2];
   for (const int side : {0, 1}) {
     const int face = 2 * axis + side;
     const bool updated = side == 0 ? lower_updated : upper_updated;
     const double sign = side == 0 ? -1.0 : 1.0;  // leaving: -x through the lower face
     for (std::size_t v = 0; v < kVariables; ++v) {
+      if (updated && covers_face) continue;  // the sweep counted every line itself
       double still = quiet_flux_.total[face][v];
       if (updated)  // the box's lines were counted by the sweep itself
         for (int l2 = box_.lower[a2]; l2 < box_.upper[a2]; ++l2)

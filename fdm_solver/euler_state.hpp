@@ -31,4 +31,11 @@ struct EulerState {
   std::vector<double> mix_pinf;
 };
 
+/// Specific internal energy e = E/rho - |u|^2/2 of cell c [J/kg].
+[[nodiscard]] inline double specific_internal_energy(const EulerState& s, std::size_t c) {
+  const double rho = s.u[kDensity][c];
+  const double mx = s.u[kMomentumX][c], my = s.u[kMomentumY][c], mz = s.u[kMomentumZ][c];
+  return (s.u[kEnergy][c] - 0.5 * (mx * mx + my * my + mz * mz) / rho) / rho;
+}
+
 }  // namespace mpfd::fdm

@@ -14,8 +14,8 @@ QuietFaceFlux quiet_face_flux(const EulerState& state, const config::Boundaries&
     const bool mirror =
         boundaries[static_cast<config::Face>(face)] != config::BoundaryKind::outflow;
     const std::size_t lines = static_cast<std::size_t>(n[a1]) * n[a2];
-    for (auto& v : q.flux[face]) v.assign(lines, 0.0);
     if (!g.is_active(a)) continue;  // no sweep, no flux through the faces of an unused axis
+    for (auto& v : q.flux[face]) v.assign(lines, 0.0);
     for (int l2 = 0; l2 < n[a2]; ++l2)
       for (int l1 = 0; l1 < n[a1]; ++l1) {
         grid::Index3 cell{};
@@ -28,7 +28,7 @@ QuietFaceFlux quiet_face_flux(const EulerState& state, const config::Boundaries&
         const double m[3] = {state.u[kMomentumX][c], state.u[kMomentumY][c],
                              state.u[kMomentumZ][c]};
         const double e_total = state.u[kEnergy][c];
-        const double e = (e_total - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
+        const double e = specific_internal_energy(state, c);
         const double p = cell_pressure(state, eos, c, rho, e);
         const double un = mirror ? 0.0 : m[a] / rho;
         q.flux[face][kDensity][line] = rho * un;

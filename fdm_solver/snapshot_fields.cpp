@@ -1,5 +1,6 @@
 #include "fdm_solver/snapshot_fields.hpp"
 
+#include <algorithm>
 #include <span>
 
 #include "common/core/error.hpp"
@@ -45,8 +46,12 @@ void check_field_name(const std::string& name) {
               (name == "burn_fraction" ? " (burn_fraction is an MPM particle field)" : ""));
 }
 
-SnapshotFields::SnapshotFields(const EulerSolver& solver)
-    : ones_(solver.tracker() ? 0 : solver.state().grid.cell_count(), 1.0) {}
+SnapshotFields::SnapshotFields(const EulerSolver& solver, const std::vector<std::string>& names) {
+  for (const auto& name : names) check_field_name(name);
+  // A one-material scene's volume fraction is 1 everywhere: one array, only if asked for.
+  if (!solver.tracker() && std::find(names.begin(), names.end(), "volume_fraction") != names.end())
+    ones_.assign(solver.state().grid.cell_count(), 1.0);
+}
 
 std::vector<io::FieldView> SnapshotFields::views(const std::vector<std::string>& names,
                                                  const config::Scene& scene,
@@ -55,7 +60,6 @@ std::vector<io::FieldView> SnapshotFields::views(const std::vector<std::string>&
   const EulerState& state = solver.state();
   std::vector<io::FieldView> out;
   for (const auto& name : names) {
-    check_field_name(name);
     if (name == "density") out.push_back({name, "kg/m^3", {state.u[kDensity]}});
     if (name == "velocity")
       out.push_back({name, "m/s", {p.velocity_x, p.velocity_y, p.velocity_z}});

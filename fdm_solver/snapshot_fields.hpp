@@ -23,10 +23,11 @@ namespace mpfd::fdm {
 void check_field_name(const std::string& name);
 
 /// Views of the named fields; `primitives` must be computed from the solver's
-/// state. Valid while the solver, the primitives and `ones` live.
+/// state. Valid while the solver, the primitives and this object live.
 class SnapshotFields {
  public:
-  explicit SnapshotFields(const EulerSolver& solver);
+  /// Checks every name (check_field_name) once, up front.
+  SnapshotFields(const EulerSolver& solver, const std::vector<std::string>& names);
   [[nodiscard]] std::vector<io::FieldView> views(const std::vector<std::string>& names,
                                                  const config::Scene& scene,
                                                  const EulerSolver& solver,

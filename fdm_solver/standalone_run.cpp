@@ -46,10 +46,9 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
                              .tracers_per_axis = scene.solver.fdm.tracers_per_axis});
   PrimitiveFields primitives;
   primitives.compute(solver.state(), solver.materials());
-  const SnapshotFields fields(solver);
   std::vector<std::string> field_names;
   for (const auto f : scene.output.fields) field_names.push_back(field_name(f));
-  for (const auto& name : field_names) check_field_name(name);  // before anything is written
+  const SnapshotFields fields(solver, field_names);  // checks them before anything is written
   io::prepare_output_directory(options.out_dir, options.overwrite);
 
   const auto& grid = solver.state().grid;
@@ -70,11 +69,16 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
                             {"velocity_x", "m/s"},
                             {"velocity_y", "m/s"},
                             {"velocity_z", "m/s"}});
-  // Room for every sample up front: recording must not allocate inside the step loop.
-  const double expected_samples = scene.output.gauge_interval
-                                      ? scene.time.end / *scene.output.gauge_interval + 2.0
-                                      : static_cast<double>(scene.time.max_steps) + 1.0;
-  gauges.reserve(static_cast<std::size_t>(std::min(expected_samples, 1.0e6)));
+  // Room for the samples up front, so recording does not allocate while
+  // stepping: one per gauge interval, or per step, estimated from the first
+  // stable step (twice that, for steps that shrink as the flow speeds up).
+  const double per_step = scene.time.end / solver.stable_dt();
+  const double interval_samples =
+      scene.output.gauge_interval ? scene.time.end / *scene.output.gauge_interval : per_step;
+  if (!gauge_cells.empty())
+    gauges.reserve(static_cast<std::size_t>(
+        std::min({2.0 * std::min(interval_samples, per_step) + 16.0,
+                  static_cast<double>(scene.time.max_steps) + 1.0, 1.0e7})));
   std::vector<double> sample(5 * gauge_cells.size());
   const auto record_gauges = [&] {
     // Gauges read the cell that holds them; only their cells need primitives.
@@ -140,7 +144,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     double next_output = 0.0;
     double next_gauge = 0.0;
     while (true) {
-      if (!scene.output.gauge_interval || solver.time() >= next_gauge) {
+      if (!gauge_cells.empty() && (!scene.output.gauge_interval || solver.time() >= next_gauge)) {
         record_gauges();
         if (scene.output.gauge_interval)
           while (next_gauge <= solver.time()) next_gauge += *scene.output.gauge_interval;
@@ -162,9 +166,13 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     }
     progress.finish(solver.steps(), solver.time());
     write_summary("completed", "");
-  } catch (const Error& e) {
-    gauges.flush();
-    write_summary("failed", e.what());
+  } catch (const std::exception& e) {
+    // Keep what was recorded, but never let a second failure hide the first.
+    try {
+      gauges.flush();
+      write_summary("failed", e.what());
+    } catch (const std::exception&) {
+    }
     throw;
   }
   logger.info("'", scene.name, "' done: ", solver.steps(), " steps to t = ", solver.time(), " s, ",

@@ -41,8 +41,8 @@ cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double
       request.fields().empty()
           ? default_fields_
           : std::vector<std::string>(request.fields().begin(), request.fields().end());
-  if (!fields_) fields_.emplace(solver);
-  const std::vector<io::FieldView> views = fields_->views(names, scene_, solver, primitives_);
+  const SnapshotFields fields(solver, names);
+  const std::vector<io::FieldView> views = fields.views(names, scene_, solver, primitives_);
   cosim::v1::OutputWritten written;
   try {
     if (!writer_) writer_.emplace(out_dir_, solver.state().grid);

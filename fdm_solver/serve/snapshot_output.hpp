@@ -34,7 +34,6 @@ class SnapshotOutput {
   std::filesystem::path out_dir_;
   config::Scene scene_;
   std::vector<std::string> default_fields_;
-  std::optional<SnapshotFields> fields_;      // made at the first write, from the solver
   std::optional<io::SnapshotWriter> writer_;  // made at the first write: it creates the folder
   PrimitiveFields primitives_;
 };

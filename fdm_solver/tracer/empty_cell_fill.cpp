@@ -26,9 +26,8 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins, Mat
   for (std::size_t c = 0; c < cells; ++c) empty += bins.count(c) == 0;
   if (empty == 0 || empty == cells) return;
 
-  // Remember each empty cell's previous material as -(3 + r) until assigned.
   for (std::size_t c = 0; c < cells; ++c)
-    if (bins.count(c) == 0) map.material[c] = kUnassigned - 1 - dominant_material(map, c);
+    if (bins.count(c) == 0) map.material[c] = kUnassigned;
   queue.clear();
   for (std::size_t c = 0; c < cells; ++c)
     if (bins.count(c) > 0) queue.push_back(c);
@@ -43,7 +42,7 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins, Mat
         next[a] += step;
         if (next[a] < 0 || next[a] >= grid.cells()[a]) continue;
         const std::size_t n = grid.cell_index(next);
-        if (map.material[n] > kUnassigned) continue;  // holds tracers, or already filled
+        if (map.material[n] != kUnassigned) continue;  // holds tracers, or already filled
         map.material[n] = material;
         queue.push_back(n);
       }

@@ -6,8 +6,7 @@
 // cells that products have filled as air. Instead each empty cell takes the
 // material of the nearest cell that holds tracers (breadth-first over face
 // neighbours, in cell order, so the result is deterministic); a mixed source
-// gives its larger material. Empty cells that reach no tracer keep their
-// previous material.
+// gives its larger material. A grid with no tracer at all is left as it was.
 
 #include <cstddef>
 #include <vector>
