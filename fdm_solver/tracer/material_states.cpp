@@ -73,6 +73,16 @@ MaterialStates::MaterialStates(const MaterialMap& map, std::span<const double> r
       }
 }
 
+ClosureReport closure_report(const MaterialStates& states) {
+  const auto count = [&](ClosureStatus which) {
+    return parallel_sum(states.cell_count, [&](std::size_t c) -> std::size_t {
+      return states.status[c] == which ? 1 : 0;
+    });
+  };
+  return {states.cell_count - count(ClosureStatus::single_material),
+          count(ClosureStatus::iteration_limit), count(ClosureStatus::fallback)};
+}
+
 ClosureReport update_cell_pressure(const grid::UniformGrid& grid, std::span<const eos::AnyEos> eos,
                                    const MaterialMap& previous, const MaterialMap& current,
                                    std::span<const double> rho, std::span<const double> e,
@@ -86,7 +96,7 @@ ClosureReport update_cell_pressure(const grid::UniformGrid& grid, std::span<cons
       if (previous.volume_fraction(c, r) <= 0.0)
         states.energy[states.at(r, c)] = newcomer_energy(grid, previous, states, c, r);
   });
-  const std::size_t mixed = parallel_sum(cells, [&](std::size_t c) -> std::size_t {
+  parallel_for(cells, [&](std::size_t c) {
     const int m = current.material[c];
     if (m != kMixedCell) {
       pressure[c] = eos::pressure(eos[static_cast<std::size_t>(m)], rho[c], e[c]);
@@ -94,7 +104,7 @@ ClosureReport update_cell_pressure(const grid::UniformGrid& grid, std::span<cons
       states.density[states.at(m, c)] = rho[c];
       states.cell_energy[c] = e[c];
       states.status[c] = ClosureStatus::single_material;
-      return 0;
+      return;
     }
     const auto [a, b] = pair_of(current, c);
     const double theta_a = current.volume_fraction(c, a);
@@ -115,13 +125,8 @@ ClosureReport update_cell_pressure(const grid::UniformGrid& grid, std::span<cons
     states.density[states.at(b, c)] = s.rho2;
     states.cell_energy[c] = e[c];
     states.status[c] = s.status;
-    return 1;
   });
-  const auto count = [&](ClosureStatus which) {
-    return parallel_sum(
-        cells, [&](std::size_t c) -> std::size_t { return states.status[c] == which ? 1 : 0; });
-  };
-  return {mixed, count(ClosureStatus::iteration_limit), count(ClosureStatus::fallback)};
+  return closure_report(states);
 }
 
 }  // namespace mpfd::fdm

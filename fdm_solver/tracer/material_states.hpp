@@ -42,6 +42,9 @@ struct ClosureReport {
   std::size_t fallbacks = 0;         ///< closures without a root (ClosureStatus::fallback)
 };
 
+/// The counts of the last update, from the closure status of every cell.
+[[nodiscard]] ClosureReport closure_report(const MaterialStates& states);
+
 /// Cell pressure [Pa] for every cell from rho_c, e_c (grid order) and the
 /// classification `current`; `previous` is the classification at the last
 /// call (it tells which materials are new to a cell). `eos[r]` is the EOS of

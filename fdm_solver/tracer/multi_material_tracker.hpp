@@ -9,7 +9,8 @@
 //      their EOS, mixed cells from the closure (3-24)-(3-28).
 // Call each exactly once per step, in this order; update_pressure right after
 // construction gives the initial pressure. Fields are plain arrays in the
-// grid's cell order (x fastest, no ghost cells).
+// grid's cell order (x fastest, no ghost cells). Between steps the whole state
+// the next step reads is TrackerState (a checkpoint saves and restores it).
 
 #include <span>
 #include <vector>
@@ -23,6 +24,17 @@
 #include "fdm_solver/tracer/tracer_set.hpp"
 
 namespace mpfd::fdm {
+
+/// What the next step reads of a tracker between steps (besides the cell
+/// fields): the tracers with their carried volumes; the classification with
+/// theta_r (after update_pressure() the previous one is the current one); and
+/// e_r, rho_r, e_c with the closure status (material_states.hpp). The bins and
+/// scratch are rebuilt from these.
+struct TrackerState {
+  TracerSet tracers;
+  MaterialMap materials;
+  MaterialStates states;
+};
 
 class MultiMaterialTracker {
  public:
@@ -47,6 +59,13 @@ class MultiMaterialTracker {
   [[nodiscard]] const MaterialMap& materials() const { return current_; }
   /// e_r, rho_r and closure status after the last update_pressure().
   [[nodiscard]] const MaterialStates& states() const { return states_; }
+
+  /// Continues from a saved state (tracers(), materials(), states() taken
+  /// between steps): the next steps are bit for bit those of the tracker that
+  /// had it. Throws mpfd::Error naming the first array whose size or values do
+  /// not fit this grid and material count (a tracer outside the grid, a
+  /// material index out of range); the tracker is then unchanged.
+  void restore(TrackerState state);
 
  private:
   grid::UniformGrid grid_;

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
+#include "common/core/error.hpp"
 #include "tests/unit/common/eos/eos_test_materials.hpp"
 
 namespace mpfd::fdm {
@@ -92,6 +94,77 @@ TEST(MultiMaterialTracker, InterfaceCellTurnsSingleOnceTheProductsFillIt) {
   EXPECT_EQ(map.material[6], 1);
   EXPECT_EQ(map.material[0], 0);  // emptied by the inflow-free left face: keeps products
   EXPECT_EQ(s.tracker.tracers().size(), 10u * 4u - 4u);
+}
+
+/// Everything restore() takes, copied out of a tracker between steps.
+TrackerState saved(const MultiMaterialTracker& tracker) {
+  return {tracker.tracers(), tracker.materials(), tracker.states()};
+}
+
+void expect_same_tracker(const MultiMaterialTracker& a, const MultiMaterialTracker& b) {
+  EXPECT_EQ(a.tracers().position, b.tracers().position);
+  EXPECT_EQ(a.tracers().material, b.tracers().material);
+  EXPECT_EQ(a.tracers().volume, b.tracers().volume);
+  EXPECT_EQ(a.materials().material, b.materials().material);
+  EXPECT_EQ(a.materials().theta, b.materials().theta);
+  EXPECT_EQ(a.states().energy, b.states().energy);
+  EXPECT_EQ(a.states().density, b.states().density);
+  EXPECT_EQ(a.states().cell_energy, b.states().cell_energy);
+  EXPECT_EQ(a.states().status, b.states().status);
+}
+
+TEST(MultiMaterialTracker, RestoredStateContinuesBitForBitAsTheTrackerThatHadIt) {
+  Slab a;
+  a.tracker.update_pressure(a.rho, a.e, a.p);
+  a.rho[5] = 20.0;  // products entering cell 5 make it mixed, with a closure to carry over
+  a.e[5] = 1.0e6;
+  for (int s = 0; s < 3; ++s) a.step();
+  ASSERT_GT(closure_report(a.tracker.states()).mixed_cells, 0u);
+
+  Slab b;  // freshly seeded: its tracers and energies differ from a's
+  b.rho = a.rho;
+  b.e = a.e;
+  b.tracker.restore(saved(a.tracker));
+  expect_same_tracker(a.tracker, b.tracker);
+  for (int s = 0; s < 3; ++s) {
+    a.step();
+    b.step();
+  }
+  expect_same_tracker(a.tracker, b.tracker);
+  EXPECT_EQ(a.p, b.p);
+}
+
+TEST(MultiMaterialTracker, RestoreRefusesAStateThatDoesNotFitAndKeepsItsOwn) {
+  Slab a;
+  a.step();
+  const TrackerState good = saved(a.tracker);
+  Slab b;
+  const TrackerState before = saved(b.tracker);
+  const auto refused = [&](TrackerState state, const std::string& text) {
+    try {
+      b.tracker.restore(std::move(state));
+    } catch (const Error& error) {
+      EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
+      return;
+    }
+    ADD_FAILURE() << "restore accepted a state with " << text;
+  };
+  TrackerState outside = good;
+  outside.tracers.position[0][3] = 0.2;  // the slab ends at 0.1 m
+  refused(outside, "tracer 3 is at 0.200000 m along axis 0, outside the grid");
+  TrackerState third_material = good;
+  third_material.tracers.material[0] = 2;
+  refused(third_material, "tracer 0 has material 2, outside [0, 2)");
+  TrackerState short_theta = good;
+  short_theta.materials.theta.pop_back();
+  refused(short_theta, "theta has 19 values; expected 20");
+  TrackerState bad_status = good;
+  bad_status.states.status[4] = static_cast<ClosureStatus>(7);
+  refused(bad_status, "cell 4 has closure status 7");
+  const TrackerState after = saved(b.tracker);
+  EXPECT_EQ(after.tracers.position, before.tracers.position);
+  EXPECT_EQ(after.materials.theta, before.materials.theta);
+  EXPECT_EQ(after.states.energy, before.states.energy);
 }
 
 }  // namespace
