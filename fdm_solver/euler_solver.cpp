@@ -331,9 +331,10 @@ EulerState& EulerSolver::state_for_update(const ActiveBox& region) {
 }
 
 void EulerSolver::restore(const EulerState& state, double time, std::int64_t steps,
-                          const Totals& outflow) {
-  if (tracker_)
-    throw Error("fdm_solver: restore of a multi-material state (tracers) is not supported");
+                          const Totals& outflow, std::optional<TrackerState> tracker) {
+  if (tracker_.has_value() != tracker.has_value())
+    throw Error(std::string("fdm_solver: restore ") + (tracker ? "with" : "without") +
+                " tracer state into a solver of " + std::to_string(eos_.size()) + " materials");
   const std::size_t cells = state_.grid.cell_count();
   if (state.grid.cells() != state_.grid.cells() || state.material.size() != cells ||
       state.mix_gamma.size() != state_.mix_gamma.size() ||
@@ -342,6 +343,10 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
                   [&](const std::vector<double>& v) { return v.size() != cells; }))
     throw Error("fdm_solver: restored state does not match the solver's grid of " +
                 std::to_string(cells) + " cells");
+  if (tracker_) {
+    tracker_->restore(std::move(*tracker));  // checks before it changes anything
+    closure_ = closure_report(tracker_->states());
+  }
   state_.u = state.u;
   state_.material = state.material;
   state_.mix_gamma = state.mix_gamma;

@@ -68,13 +68,14 @@ class EulerSolver {
   [[nodiscard]] const ClosureReport& last_closure() const { return closure_; }
 
   /// Continues from a checkpoint: replaces the state, the clock (time,
-  /// steps) and the accumulated boundary outflow. The disturbed box becomes
-  /// the whole grid, since which cells are still is not part of a checkpoint:
-  /// exactness over speed after a restore (a still cell is advanced to the
-  /// same bits as a skipped one). One-material solvers only (the tracers are
-  /// not restorable); `state` must be on this solver's grid. Throws
-  /// mpfd::Error otherwise.
-  void restore(const EulerState& state, double time, std::int64_t steps, const Totals& outflow);
+  /// steps), the accumulated boundary outflow and, in a multi-material solver,
+  /// the tracker's state (which it must then be given; saved from tracker()).
+  /// The disturbed box becomes the whole grid, since which cells are still is
+  /// not part of a checkpoint: exactness over speed after a restore (a still
+  /// cell is advanced to the same bits as a skipped one). `state` must be on
+  /// this solver's grid. Throws mpfd::Error otherwise, before changing anything.
+  void restore(const EulerState& state, double time, std::int64_t steps, const Totals& outflow,
+               std::optional<TrackerState> tracker = std::nullopt);
 
   [[nodiscard]] Totals totals() const;
   /// What has left through the domain faces since the start (momentum: the
