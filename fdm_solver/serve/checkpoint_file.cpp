@@ -61,7 +61,7 @@ void check_header(const CheckpointReader& in, const ServedZone& zone) {
   const std::string names = h5.read_string_attribute("/", "material_names");
   if (materials != static_cast<double>(zone.scene.materials.size()) ||
       names != material_names(zone.scene))
-    in.mismatch("holds " + std::to_string(static_cast<long long>(materials)) + " materials (" +
+    in.mismatch("holds material count " + std::to_string(static_cast<long long>(materials)) + " (" +
                 names + "); the running scene '" + zone.scene.name + "' has " +
                 std::to_string(zone.scene.materials.size()) + " (" + material_names(zone.scene) +
                 ")");

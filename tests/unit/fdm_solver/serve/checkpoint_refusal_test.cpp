@@ -90,8 +90,9 @@ TEST_F(FdmCheckpointRefusal, AnotherGridIsNamedWithBothCellCounts) {
 
 TEST_F(FdmCheckpointRefusal, AnotherMaterialCountIsNamedWithBothMaterialLists) {
   const fs::path file = checkpoint_of(corner_charge_text(20, 20, false), 12, dir_.path() / "air");
-  EXPECT_THAT(refusal(file), AllOf(HasSubstr(file.string()), HasSubstr("holds 1 materials (air)"),
-                                   HasSubstr("has 2 (air, products)")));
+  EXPECT_THAT(refusal(file),
+              AllOf(HasSubstr(file.string()), HasSubstr("holds material count 1 (air)"),
+                    HasSubstr("has 2 (air, products)")));
 }
 
 TEST_F(FdmCheckpointRefusal, ATruncatedFileFailsItsDigestAndWithAMatchingDigestItsHdf5Read) {
