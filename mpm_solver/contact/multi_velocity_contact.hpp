@@ -21,7 +21,7 @@ namespace mpfd::mpm::contact {
 
 struct ContactLaw {
   double friction = 0;          ///< Coulomb coefficient µ of T (2-32), >= 0
-  std::size_t normal_body = 0;  ///< body A of T (2-24), whose surface gives the normal
+  std::size_t normal_body = 0;  ///< body A of T (2-24) (< the node's body count): gives the normal
 };
 
 /// The momentum changes Δp^b = Δt f^{b,c,n} that resolve contact between the
