@@ -3,9 +3,9 @@
 //   sigma_y = (A + B eps_p^n) (1 + C ln epsdot*) (1 - T*^m),
 //   epsdot* = max(epsdot_p / epsdot0, 1),  T* = clamp((T - T_room) / (T_melt - T_room), 0, 1).
 // The rate is the equivalent plastic strain rate Delta eps_p / dt of the
-// step, floored at the reference rate so the log never goes negative
-// (AUTODYN, LS-DYNA *MAT_015 do the same). T* is clamped: below room
-// temperature the material does not harden, at T_melt it has no strength.
+// step, so the return map is implicit in it; it is floored at the reference
+// rate so the log never weakens the metal. T* is clamped: below room
+// temperature the metal does not harden, at and above T_melt it has no strength.
 // For the return map the flow stress is a function of the step's plastic
 // strain increment x = Delta eps_p at a temperature fixed over the step.
 
@@ -32,11 +32,6 @@ class JohnsonCookFlowStress {
         (temperature - p_.room_temperature) / (p_.melt_temperature - p_.room_temperature), 0.0,
         1.0);
     return 1.0 - std::pow(homologous, p_.m);
-  }
-
-  /// 1 + C ln max(epsdot_p / epsdot0, 1) [-].
-  [[nodiscard]] double rate_factor(double plastic_strain_rate) const noexcept {
-    return 1.0 + p_.c * std::log(std::max(plastic_strain_rate / p_.reference_strain_rate, 1.0));
   }
 
   /// sigma_y and its slope after a plastic increment x >= 0 over a step dt

@@ -22,8 +22,8 @@
 
 namespace mpfd::mpm {
 
-/// Fraction of plastic work that heats the metal (Taylor-Quinney; 0.9 is the
-/// usual value for steels and aluminium, and Karamelo's default).
+/// Fraction of plastic work that heats the metal (Taylor-Quinney coefficient;
+/// 0.9 is the value usually taken for metals; the rest is stored in the lattice).
 inline constexpr double kTaylorQuinney = 0.9;
 
 class JohnsonCookModel final : public ConstitutiveModel {
