@@ -98,6 +98,9 @@ std::shared_ptr<const Table<JohnsonCook>> johnson_cook() {
                 "for the adiabatic temperature rise")
       .required("shear_modulus", &JohnsonCook::shear_modulus, Number("Pa", Range::above(0)),
                 "shear modulus G")
+      .optional("failure_strain", &JohnsonCook::failure_strain, kPositive,
+                "equivalent plastic strain at which the material fails: no deviatoric stress, "
+                "no tension; absent: never fails")
       .rule("T_melt > T_room", [](const JohnsonCook& j, const Cursor& c) {
         if (j.melt_temperature <= j.room_temperature) {
           c.error_at("T_melt", "expected T_melt > T_room = " + format_number(j.room_temperature) +

@@ -67,6 +67,8 @@ struct JohnsonCook {
   double reference_strain_rate = 1.0;  ///< epsdot0 [1/s]
   double specific_heat = 0.0;          ///< [J/(kg K)], for the adiabatic temperature rise
   double shear_modulus = 0.0;          ///< [Pa]
+  /// Equivalent plastic strain at failure [-]; absent: never fails.
+  std::optional<double> failure_strain;
 };
 
 using AnyStrength = std::variant<NoStrength, ElasticStrength, JohnsonCook>;

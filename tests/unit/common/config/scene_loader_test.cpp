@@ -71,7 +71,7 @@ materials:
   steel:
     eos: {type: mie_gruneisen, rho0: 7830, C0: 4569, S: 1.49, gamma0: 2.17}
     strength: {type: johnson_cook, A: 350e6, B: 275e6, n: 0.36, C: 0.022, m: 1.0,
-               T_melt: 1811, specific_heat: 452, shear_modulus: 81.8e9}
+               T_melt: 1811, specific_heat: 452, shear_modulus: 81.8e9, failure_strain: 0.3}
   water: {eos: {type: polynomial, rho0: 1000, A1: 2.2e9, B0: 0.28}}
 initial: {material: air, density: 1.225, pressure: 1.0e5, velocity: [1, 2, 3]}
 bodies:
@@ -106,6 +106,7 @@ solver: {method: mpm, fdm: {artificial_viscosity: 0.5}, mpm: {shape_function: gi
   EXPECT_EQ(jc.n, 0.36);
   EXPECT_EQ(jc.room_temperature, 293.0);
   EXPECT_EQ(jc.reference_strain_rate, 1.0);
+  EXPECT_EQ(jc.failure_strain, 0.3);
   const auto& water = std::get<eos::Polynomial>(s.materials[3].eos);
   EXPECT_EQ(water.b0, 0.28);
   EXPECT_EQ(water.a2, 0.0);

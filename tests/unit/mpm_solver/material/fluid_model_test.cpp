@@ -7,15 +7,12 @@
 
 #include "common/config/scene.hpp"
 #include "common/core/error.hpp"
+#include "tests/unit/mpm_solver/material/material_test_support.hpp"
 
 namespace mpfd::mpm {
 namespace {
 
-struct PointStorage {
-  Tensor3 s = Tensor3::Zero();
-  double p = 0, e = 0, c = 0, eps = 0, wp = 0, d = 0, t = 293;
-  MaterialPoint view() { return {s, p, e, c, eps, wp, d, t, {}}; }
-};
+using test_support::PointStorage;
 
 StrainStep compression(double rho_old, double ratio) {
   StrainStep step;
