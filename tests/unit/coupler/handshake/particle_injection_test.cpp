@@ -163,6 +163,40 @@ TYPED_TEST(ParticleInjection, Constant_inflow_creates_the_expected_mass) {
   }
 }
 
+// A parcel that waited until the fluid had swept 1.8 cells (4 m_min = 1.76
+// cell masses in 1D) is laid out in its own cell k-w+1 all the same: T (4-17)'s
+// distance is capped at the cell width.
+TEST(ParticleInjection1D, Long_waiting_parcel_stays_inside_its_cell) {
+  const auto g = test::test_geometry<1>();
+  const ZoneFace face{0, 1};
+  const auto layout = make_strip_layout(IndexBox<1>{{5}, {7}}, face);
+  Strip<1> strip(2);
+  strip.set(0, 1.2, Vec<1>(50.0), 1e5);
+  strip.set(1, 1.2, Vec<1>(50.0), 1e5);
+  const double cell_mass = 1.2 * g.cell_volume;
+  const InjectionRule rule{0.5 * cell_mass, 0.44 * cell_mass};
+  Parcels<1> pending(1);
+  FaceAmounts<1> returned(1);
+  std::vector<std::size_t> count(1);
+  const double dt = 0.1 * g.spacing(0) / 50.0;  // a tenth of a cell per step
+  std::size_t total = 0;
+  int steps = 0;
+  while (total == 0 && steps < 100) {
+    accumulate_face_fluxes<1>(strip.states(), layout, g, dt, pending, returned.view());
+    total = count_new_particles(pending, rule, count);
+    ++steps;
+  }
+  ASSERT_EQ(total, 4u);
+  EXPECT_EQ(steps, 18);  // 1.8 cells swept
+  Batch<1> batch(total);
+  create_particles<1>(pending, count, layout, g, batch.view());
+  const double lower = g.lower_corner(layout.inner_cell[0])(0);
+  for (std::size_t p = 0; p < total; ++p) {
+    EXPECT_GT(batch.position[p](0), lower);
+    EXPECT_LT(batch.position[p](0), lower + g.spacing(0));
+  }
+}
+
 // Random, sometimes reversing flow for 400 steps: every amount T (4-13), (4-14)
 // and the energy flux put through the face (evaluated here from the formulas)
 // is, to round-off, in the injected particles, in what went back to cell k-w,
