@@ -46,6 +46,7 @@ template <int Dim>
 void accumulate_face_fluxes(const CellStates<Dim>& strip, const StripLayout<Dim>& layout,
                             const CellGeometry<Dim>& geometry, double dt, Parcels<Dim>& pending,
                             const Amounts<Dim>& returned) {
+  geometry.check();
   const std::size_t n = layout.face_cells();
   require_lengths(strip, layout.box.count(), "strip cells");
   require_length(pending.size(), n, "pending parcels", "mass");

@@ -51,6 +51,7 @@ template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
                           const StripLayout<Dim>& layout, const InterfaceStencil<Dim>& stencil,
                           const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add) {
+  geometry.check();
   require_lengths(strip, layout.box.count(), "strip cells");
   require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
   require_node_lengths(add, stencil.cells.size(), "interface nodes");

@@ -41,6 +41,7 @@ template <int Dim>
 void create_particles(Parcels<Dim>& pending, std::span<const std::size_t> count,
                       const StripLayout<Dim>& layout, const CellGeometry<Dim>& geometry,
                       const NewParticles<Dim>& out) {
+  geometry.check();
   require_length(count.size(), pending.size(), "particle injection", "count");
   require_length(layout.face_cells(), pending.size(), "particle injection", "strip face cells");
   std::size_t total = 0;
