@@ -1,0 +1,110 @@
+#include "coupler/handshake/injection_flux.hpp"
+
+#include <string>
+
+#include "common/core/error.hpp"
+#include "common/core/require.hpp"
+
+namespace mpfd::coupler::handshake {
+namespace {
+
+template <int Dim>
+void move_parcel(Parcels<Dim>& pending, std::size_t t, const Amounts<Dim>& returned) {
+  returned.mass[t] = pending.mass[t];
+  returned.momentum[t] = pending.momentum[t];
+  returned.energy[t] = pending.energy[t];
+  pending.clear(t);
+}
+
+template <int Dim>
+void require_amount_lengths(const Amounts<Dim>& amounts, std::size_t n, const char* what) {
+  require_length(amounts.mass.size(), n, what, "mass");
+  require_length(amounts.momentum.size(), n, what, "momentum");
+  require_length(amounts.energy.size(), n, what, "energy");
+}
+
+}  // namespace
+
+template <int Dim>
+Parcels<Dim>::Parcels(std::size_t face_cells)
+    : mass(face_cells, 0.0),
+      momentum(face_cells, Vec<Dim>::Zero()),
+      energy(face_cells, 0.0),
+      volume(face_cells, 0.0),
+      travel(face_cells, 0.0) {}
+
+template <int Dim>
+void Parcels<Dim>::clear(std::size_t t) {
+  mass[t] = 0;
+  momentum[t].setZero();
+  energy[t] = 0;
+  volume[t] = 0;
+  travel[t] = 0;
+}
+
+template <int Dim>
+void accumulate_face_fluxes(const CellStates<Dim>& strip, const StripLayout<Dim>& layout,
+                            const CellGeometry<Dim>& geometry, double dt, Parcels<Dim>& pending,
+                            const Amounts<Dim>& returned) {
+  geometry.check();
+  const std::size_t n = layout.face_cells();
+  require_lengths(strip, layout.box.count(), "strip cells");
+  require_length(pending.size(), n, "pending parcels", "mass");
+  require_amount_lengths(returned, n, "returned parcels");
+  require(dt > 0, "face fluxes", "dt", dt, "> 0");
+  const int axis = layout.face.axis;
+  const double area = geometry.face_area(axis);
+  for (std::size_t t = 0; t < n; ++t) {
+    const std::size_t a = layout.outer[t];
+    const std::size_t b = layout.inner[t];
+    if (!(strip.rho[a] > 0 && strip.rho[b] > 0))
+      throw Error("face fluxes: face cell " + std::to_string(t) +
+                  " needs rho > 0 on both sides, got " + shortest_text(strip.rho[a]) + " and " +
+                  shortest_text(strip.rho[b]));
+    const Vec<Dim> v_a = strip.momentum[a] / strip.rho[a];
+    const Vec<Dim> v_b = strip.momentum[b] / strip.rho[b];
+    const double rho_e_a = strip.energy[a] - 0.5 * strip.rho[a] * v_a.squaredNorm();
+    const double rho_e_b = strip.energy[b] - 0.5 * strip.rho[b] * v_b.squaredNorm();
+    if (!(rho_e_a > 0 && rho_e_b > 0))
+      throw Error("face fluxes: face cell " + std::to_string(t) +
+                  " needs internal energy density > 0 on both sides, got " +
+                  shortest_text(rho_e_a) + " and " + shortest_text(rho_e_b));
+    const double rho_f = 0.5 * (strip.rho[a] + strip.rho[b]);  // T (4-10)
+    const Vec<Dim> v_f = 0.5 * (v_a + v_b);                    // T (4-11)
+    const double rho_e_f = 0.5 * (rho_e_a + rho_e_b);          // T (4-12), energy form
+    const double inflow = layout.face.side * v_f(axis);        // v_1f into the zone
+    if (!(inflow > 0)) {
+      move_parcel(pending, t, returned);
+      continue;
+    }
+    const double swept = inflow * area * dt;
+    const double mass_flux = rho_f * swept;  // T (4-13)
+    pending.mass[t] += mass_flux;
+    pending.momentum[t] += mass_flux * v_f;  // T (4-14)
+    pending.energy[t] += (rho_e_f + 0.5 * rho_f * v_f.squaredNorm()) * swept;
+    pending.volume[t] += swept;
+    pending.travel[t] += inflow * dt;
+    returned.mass[t] = 0;
+    returned.momentum[t].setZero();
+    returned.energy[t] = 0;
+  }
+}
+
+template <int Dim>
+void drain_parcels(Parcels<Dim>& pending, const Amounts<Dim>& returned) {
+  require_amount_lengths(returned, pending.size(), "returned parcels");
+  for (std::size_t t = 0; t < pending.size(); ++t) move_parcel(pending, t, returned);
+}
+
+#define MPFD_INSTANTIATE_FLUX(Dim)                                                           \
+  template struct Parcels<Dim>;                                                              \
+  template void accumulate_face_fluxes<Dim>(const CellStates<Dim>&, const StripLayout<Dim>&, \
+                                            const CellGeometry<Dim>&, double, Parcels<Dim>&, \
+                                            const Amounts<Dim>&);                            \
+  template void drain_parcels<Dim>(Parcels<Dim>&, const Amounts<Dim>&);
+MPFD_INSTANTIATE_FLUX(1)
+MPFD_INSTANTIATE_FLUX(2)
+MPFD_INSTANTIATE_FLUX(3)
+#undef MPFD_INSTANTIATE_FLUX
+
+}  // namespace mpfd::coupler::handshake

@@ -1,0 +1,65 @@
+#pragma once
+// FDM -> MPM transport across the MPM zone's boundary face, T §4.2.4,
+// (4-10) ... (4-14). For face cell t (cells a = k-w outside, b = k-w+1 inside
+// the zone, StripLayout), with u_n = side * v_1f the face velocity into the zone:
+//   ρ_f = ½(ρ_a + ρ_b),  v_f = ½(v_a + v_b),  (ρe)_f = ½((ρe)_a + (ρe)_b)
+//                                                    T (4-10), (4-11), (4-12)
+//   f_m = ρ_f u_n A Δt,  f_p = ρ_f v_f u_n A Δt        T (4-13), (4-14)
+//   f_E = ((ρe)_f + ½ ρ_f |v_f|²) u_n A Δt            (the energy T leaves to (4-18))
+// A = ΔyΔz the face area. (4-12) is used in its EOS-free form: for an ideal gas
+// (ρe)_f = p_f / (γ - 1), so f_E's internal part is (4-18)'s p_f m / ((γ-1) ρ_f).
+// No pressure work p u A Δt and no pressure impulse p A Δt enter: the MPM gets
+// them from the interface force of T (4-9).
+// Fluxes are added to a per-face-cell parcel (`Parcels`) that becomes particles
+// once heavy enough (particle_injection.hpp). When u_n <= 0 the parcel goes
+// back to cell a (`returned`, deposited like a removed particle), so nothing
+// waits while the flow leaves the zone. Ledger, per face cell and exact up to
+// round-off: Σ fluxes = Σ injected + Σ returned + parcel.
+
+#include <span>
+#include <vector>
+
+#include "coupler/handshake/fields.hpp"
+#include "coupler/handshake/strip_layout.hpp"
+
+namespace mpfd::coupler::handshake {
+
+/// Amounts (kg, kg m/s, J total energy) per face cell or per particle.
+template <int Dim>
+struct Amounts {
+  std::span<double> mass;
+  std::span<Vec<Dim>> momentum;
+  std::span<double> energy;
+};
+
+/// What has crossed each face cell and is not yet in either solver. Owned by
+/// the coupler across steps (and checkpointed with it).
+template <int Dim>
+struct Parcels {
+  std::vector<double> mass;        ///< kg
+  std::vector<Vec<Dim>> momentum;  ///< kg m/s
+  std::vector<double> energy;      ///< J, internal + kinetic
+  std::vector<double> volume;      ///< m^3, Σ f_m / ρ_f (gives the particles' density)
+  std::vector<double> travel;      ///< m, Σ u_n Δt (how far the oldest flux has gone)
+
+  explicit Parcels(std::size_t face_cells = 0);
+  [[nodiscard]] std::size_t size() const { return mass.size(); }
+  /// Empties parcel t.
+  void clear(std::size_t t);
+};
+
+/// Adds one step's fluxes, T (4-10) ... (4-14), to `pending` where the flow
+/// enters the zone, and moves the parcel to `returned` (else zero) where it
+/// does not. `strip` is the strip_cells export at t^n, `dt` the step Δt^n.
+/// Throws mpfd::Error naming the face cell if a density or the internal energy
+/// of a cell is not > 0.
+template <int Dim>
+void accumulate_face_fluxes(const CellStates<Dim>& strip, const StripLayout<Dim>& layout,
+                            const CellGeometry<Dim>& geometry, double dt, Parcels<Dim>& pending,
+                            const Amounts<Dim>& returned);
+
+/// Moves every parcel to `returned` (the flush before output or checkpoint).
+template <int Dim>
+void drain_parcels(Parcels<Dim>& pending, const Amounts<Dim>& returned);
+
+}  // namespace mpfd::coupler::handshake

@@ -1,0 +1,96 @@
+#include "coupler/handshake/interface_nodes.hpp"
+
+#include <string>
+
+#include "common/core/error.hpp"
+
+namespace mpfd::coupler::handshake {
+namespace {
+
+// The transverse axes of a face normal to `axis`, in increasing order.
+template <int Dim>
+std::array<int, Dim - 1> transverse_axes(int axis) {
+  std::array<int, Dim - 1> axes{};
+  int b = 0;
+  for (int a = 0; a < Dim; ++a)
+    if (a != axis) axes[b++] = a;
+  return axes;
+}
+
+}  // namespace
+
+template <int Dim>
+InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
+                                             const IndexBox<Dim>& nodes) {
+  nodes.check("interface nodes");
+  const int axis = strip.face.axis;
+  const std::int64_t layer = strip.face_node_layer();
+  if (nodes.lo[axis] != layer || nodes.hi[axis] != layer + 1)
+    throw Error("interface nodes: the box must be the node layer " + std::to_string(layer) +
+                " of the MPM zone face along axis " + std::to_string(axis) + ", got [" +
+                std::to_string(nodes.lo[axis]) + ", " + std::to_string(nodes.hi[axis]) + ")");
+  IndexBox<Dim> face_cells = strip.box;
+  face_cells.hi[axis] = face_cells.lo[axis] + 1;
+  const auto axes = transverse_axes<Dim>(axis);
+  InterfaceStencil<Dim> stencil;
+  stencil.cells.resize(nodes.count());
+  for (std::size_t n = 0; n < nodes.count(); ++n) {
+    const Index<Dim> node = nodes.at(n);
+    for (int q = 0; q < kFaceCorners<Dim>; ++q) {
+      Index<Dim> cell = node;
+      cell[axis] = face_cells.lo[axis];
+      for (int b = 0; b < Dim - 1; ++b) cell[axes[b]] -= (q >> b) & 1;
+      stencil.cells[n][q] =
+          face_cells.contains(cell) ? static_cast<std::int64_t>(face_cells.flat(cell)) : -1;
+    }
+  }
+  return stencil;
+}
+
+template <int Dim>
+void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
+                          const StripLayout<Dim>& layout, const InterfaceStencil<Dim>& stencil,
+                          const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add) {
+  geometry.check();
+  require_lengths(strip, layout.box.count(), "strip cells");
+  require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
+  require_node_lengths(add, stencil.cells.size(), "interface nodes");
+  const int axis = layout.face.axis;
+  const auto axes = transverse_axes<Dim>(axis);
+  const double volume = geometry.cell_volume;
+  const double weight = 1.0 / (1 << Dim);  // N_Ic at the cell centre
+  for (std::size_t n = 0; n < stencil.cells.size(); ++n) {
+    double mass = 0;
+    Vec<Dim> momentum = Vec<Dim>::Zero();
+    Vec<Dim> force = Vec<Dim>::Zero();
+    for (int q = 0; q < kFaceCorners<Dim>; ++q) {
+      const std::int64_t t = stencil.cells[n][q];
+      if (t < 0) continue;
+      const std::size_t c = layout.outer[static_cast<std::size_t>(t)];
+      Vec<Dim> gradient;  // ∇N_Ic at the centre of cell c
+      gradient(axis) = layout.face.side / (geometry.spacing(axis) * kFaceCorners<Dim>);
+      for (int b = 0; b < Dim - 1; ++b)
+        gradient(axes[b]) =
+            (((q >> b) & 1) != 0 ? 1.0 : -1.0) / (geometry.spacing(axes[b]) * kFaceCorners<Dim>);
+      mass += weight * strip.rho[c] * volume;           // T (4-7)
+      momentum += weight * volume * strip.momentum[c];  // T (4-8)
+      force += strip_pressure[c] * volume * gradient;   // T (4-9)
+    }
+    add.mass[n] = mass;
+    add.momentum[n] = momentum;
+    add.internal_force[n] = force;
+  }
+}
+
+#define MPFD_INSTANTIATE_INTERFACE(Dim)                                                          \
+  template InterfaceStencil<Dim> make_interface_stencil<Dim>(const StripLayout<Dim>&,            \
+                                                             const IndexBox<Dim>&);              \
+  template void interface_node_terms<Dim>(const CellStates<Dim>&, std::span<const double>,       \
+                                          const StripLayout<Dim>&, const InterfaceStencil<Dim>&, \
+                                          const CellGeometry<Dim>&, const NodeOutputs<Dim>&);
+MPFD_INSTANTIATE_INTERFACE(1)
+MPFD_INSTANTIATE_INTERFACE(2)
+MPFD_INSTANTIATE_INTERFACE(3)
+#undef MPFD_INSTANTIATE_INTERFACE
+
+}  // namespace mpfd::coupler::handshake

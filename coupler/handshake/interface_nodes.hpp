@@ -1,0 +1,52 @@
+#pragma once
+// The FDM's share of the MPM interface nodes, T §4.2.3, (4-7) ... (4-9). The
+// nodes on the MPM zone's boundary face (region `interface_nodes`) see the
+// particles on the zone's side, and, on the other side, the FDM cells k-w
+// (outer layer of `strip_cells`) as particles of volume V_c at their centres:
+//   m_I += Σ_c ρ_c N_Ic V_c                                  T (4-7), 2nd term
+//   p_I += Σ_c ρ_c V_c v_c N_Ic = Σ_c (ρv)_c V_c N_Ic         T (4-8), 2nd term
+//   f_I^int += Σ_c ∇N_Ic p_c V_c                             T (4-9), 2nd term
+// c runs over the 2^(Dim-1) outer cells that have node I as a corner (T:
+// "the FDM cells adjacent to the node"; cell k-w+1 is covered by particles).
+// At a cell centre N_Ic = 2^-Dim and ∂N_Ic/∂x_a = s_a / (Δx_a 2^(Dim-1)),
+// s_a = +1 if the node is on the cell's upper side along a, else -1. The FDM
+// term is the MPM internal force -∇N σ V of a fluid particle, σ = -p I. The
+// MPM adds these to its own P2G sums before (2-13) (protocol: ADD).
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "coupler/handshake/fields.hpp"
+#include "coupler/handshake/strip_layout.hpp"
+
+namespace mpfd::coupler::handshake {
+
+template <int Dim>
+inline constexpr int kFaceCorners = 1 << (Dim - 1);
+
+/// Per interface node (C order of the `interface_nodes` box): the face cells
+/// t whose outer cell has the node as a corner, slot q meaning the node is on
+/// the cell's upper side along the b-th transverse axis iff bit b of q is set;
+/// -1 where that cell is not in the strip (the strip's lateral edge).
+template <int Dim>
+struct InterfaceStencil {
+  std::vector<std::array<std::int64_t, kFaceCorners<Dim>>> cells;
+};
+
+/// Builds the stencil of `nodes` (a one-node-thick box on the face layer of
+/// `strip`). Throws mpfd::Error if the box is not on the face.
+template <int Dim>
+[[nodiscard]] InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
+                                                           const IndexBox<Dim>& nodes);
+
+/// The second terms of T (4-7) ... (4-9) for each interface node, written to
+/// `add` (an ApplyRegion{interface_nodes, ADD}) from the strip's exported
+/// states and pressure (strip order).
+template <int Dim>
+void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
+                          const StripLayout<Dim>& layout, const InterfaceStencil<Dim>& stencil,
+                          const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add);
+
+}  // namespace mpfd::coupler::handshake

@@ -1,0 +1,153 @@
+#include "coupler/handshake/interface_nodes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "common/core/error.hpp"
+#include "tests/unit/coupler/handshake/handshake_test_support.hpp"
+
+namespace mpfd::coupler::handshake {
+namespace {
+
+using test::Dimensions;
+
+constexpr double kTol = 1e-12;  // round-off of sums over up to 64 particles
+
+template <int Dim>
+struct Strip {
+  std::vector<double> rho;
+  std::vector<Vec<Dim>> momentum;
+  std::vector<double> energy;
+  std::vector<double> pressure;
+};
+
+template <int Dim>
+struct Added {
+  std::vector<double> mass;
+  std::vector<Vec<Dim>> momentum;
+  std::vector<Vec<Dim>> force;
+  explicit Added(std::size_t n)
+      : mass(n, 0.0), momentum(n, Vec<Dim>::Zero()), force(n, Vec<Dim>::Zero()) {}
+  NodeOutputs<Dim> outputs() { return {mass, momentum, force}; }
+};
+
+// The strip of cells [f-1, f+1) along `axis` and [0, 6) across, for a face at
+// node layer f (= 4) with the MPM zone on `side`.
+template <int Dim>
+IndexBox<Dim> strip_box(const ZoneFace& face) {
+  auto box = test::cube<Dim>(0, 6);
+  box.lo[face.axis] = 3;
+  box.hi[face.axis] = 5;
+  return box;
+}
+
+template <class D>
+class InterfaceNodes : public ::testing::Test {};
+TYPED_TEST_SUITE(InterfaceNodes, Dimensions);
+
+// Uniform flow across the MPM zone boundary: particles on the zone's side plus
+// the FDM cells k-w as particles give the interface nodes the mass, momentum and
+// (zero) internal force of any interior node, T (4-7) ... (4-9), on both sides
+// and every axis.
+TYPED_TEST(InterfaceNodes, Uniform_flow_is_left_unchanged) {
+  constexpr int Dim = TypeParam::value;
+  const auto g = test::test_geometry<Dim>();
+  const double rho = 1.2;
+  const double pressure = 1.0e5;
+  const Vec<Dim> v = test::some_velocity<Dim>();
+  for (int axis = 0; axis < Dim; ++axis) {
+    for (int side : {1, -1}) {
+      const ZoneFace face{axis, side};
+      const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+      auto zone = test::cube<Dim>(0, 6);  // MPM cells on the zone's side of node layer 4
+      if (side > 0)
+        zone.lo[axis] = 4;
+      else
+        zone.hi[axis] = 4;
+      const auto particles = test::uniform_particles<Dim>(zone, g, rho, v, 2.0e5);
+      auto nodes = test::cube<Dim>(1, 6);  // interface nodes clear of the strip's lateral edges
+      nodes.lo[axis] = layout.face_node_layer();
+      nodes.hi[axis] = nodes.lo[axis] + 1;
+      ASSERT_EQ(nodes.lo[axis], 4);
+      auto mpm = test::particles_to_nodes<Dim>(particles, pressure, nodes, g);
+
+      const std::size_t n = layout.box.count();
+      const Strip<Dim> strip{std::vector<double>(n, rho), std::vector<Vec<Dim>>(n, rho * v),
+                             std::vector<double>(n, 0.0), std::vector<double>(n, pressure)};
+      Added<Dim> add(nodes.count());
+      interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, layout,
+                                make_interface_stencil(layout, nodes), g, add.outputs());
+      const double node_mass = rho * g.cell_volume;
+      const double force_scale = pressure * g.face_area(axis);
+      for (std::size_t i = 0; i < nodes.count(); ++i) {
+        EXPECT_NEAR(mpm.mass[i] + add.mass[i], node_mass, kTol * node_mass);
+        EXPECT_LE((mpm.momentum[i] + add.momentum[i] - node_mass * v).norm(),
+                  kTol * node_mass * v.norm());
+        EXPECT_LE((mpm.force[i] + add.force[i]).norm(), kTol * force_scale)
+            << "axis " << axis << " side " << side << " node " << i;
+        // The FDM term alone is half the node (the outer half-support).
+        EXPECT_NEAR(add.mass[i], 0.5 * node_mass, kTol * node_mass);
+      }
+    }
+  }
+}
+
+// Momentum balance of the correction for arbitrary FDM cells: over all nodes of
+// the face, T (4-7), (4-8) add the half of each cell k-w that lies in the
+// interface nodes' support (Σ_I N_Ic = 1/2), and T (4-9) adds exactly the
+// pressure force p_c A on each cell's face, normal into the zone (no tangential
+// force).
+TYPED_TEST(InterfaceNodes, Correction_conserves_momentum_for_any_strip_state) {
+  constexpr int Dim = TypeParam::value;
+  const auto g = test::test_geometry<Dim>();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.5, 1.5);
+  for (int side : {1, -1}) {
+    const ZoneFace face{Dim - 1, side};
+    const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+    auto nodes = test::cube<Dim>(0, 7);  // every node of the face
+    nodes.lo[face.axis] = layout.face_node_layer();
+    nodes.hi[face.axis] = nodes.lo[face.axis] + 1;
+    const std::size_t n = layout.box.count();
+    Strip<Dim> strip{{}, {}, std::vector<double>(n, 0.0), {}};
+    for (std::size_t c = 0; c < n; ++c) {
+      strip.rho.push_back(unit(random));
+      Vec<Dim> m;
+      for (int a = 0; a < Dim; ++a) m(a) = 100 * (unit(random) - 1);
+      strip.momentum.push_back(m);
+      strip.pressure.push_back(1e5 * unit(random));
+    }
+    Added<Dim> add(nodes.count());
+    interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, layout,
+                              make_interface_stencil(layout, nodes), g, add.outputs());
+    double mass = 0, expected_mass = 0;
+    Vec<Dim> momentum = Vec<Dim>::Zero(), expected_momentum = Vec<Dim>::Zero();
+    Vec<Dim> force = Vec<Dim>::Zero(), expected_force = Vec<Dim>::Zero();
+    for (std::size_t i = 0; i < nodes.count(); ++i) {
+      mass += add.mass[i];
+      momentum += add.momentum[i];
+      force += add.force[i];
+    }
+    for (std::size_t t = 0; t < layout.face_cells(); ++t) {
+      const std::size_t c = layout.outer[t];
+      expected_mass += 0.5 * strip.rho[c] * g.cell_volume;
+      expected_momentum += 0.5 * strip.momentum[c] * g.cell_volume;
+      expected_force(face.axis) += side * strip.pressure[c] * g.face_area(face.axis);
+    }
+    EXPECT_NEAR(mass, expected_mass, kTol * expected_mass);
+    EXPECT_LE((momentum - expected_momentum).norm(), kTol * expected_momentum.norm());
+    EXPECT_LE((force - expected_force).norm(), kTol * expected_force.norm());
+  }
+}
+
+TEST(InterfaceNodes2D, Node_box_must_lie_on_the_face) {
+  const ZoneFace face{0, 1};
+  const auto layout = make_strip_layout(IndexBox<2>{{3, 0}, {5, 4}}, face);
+  EXPECT_THROW((void)make_interface_stencil(layout, IndexBox<2>{{3, 0}, {4, 5}}), Error);
+  EXPECT_NO_THROW((void)make_interface_stencil(layout, IndexBox<2>{{4, 0}, {5, 5}}));
+}
+
+}  // namespace
+}  // namespace mpfd::coupler::handshake
