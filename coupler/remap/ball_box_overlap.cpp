@@ -84,35 +84,57 @@ double corner(const std::array<double, D>& l) {
   }
 }
 
-// |unit ball ∩ {x_i >= l_i}| for any signs of l_i.
+// |unit ball ∩ [lo, hi]| for a box in the first orthant (lo >= 0), by
+// inclusion-exclusion over its corners.
 template <int D>
-double orthant(std::array<double, D> l) {
-  for (int i = 0; i < D; ++i) {
-    if (l[i] >= 1.0) return 0.0;
-    if (l[i] < 0.0) {
-      std::array<double, D> reflected = l;
-      reflected[i] = -l[i];
-      l[i] = 0.0;
-      return 2.0 * orthant<D>(l) - orthant<D>(reflected);
-    }
-  }
-  return corner<D>(l);
-}
-
-template <int D>
-double unit_overlap(std::span<const double> lower, std::span<const double> upper, double radius) {
+double positive_box(const std::array<double, D>& lo, const std::array<double, D>& hi) {
   double sum = 0.0;
   for (int bits = 0; bits < (1 << D); ++bits) {
     std::array<double, D> l{};
     int sign = 1;
     for (int i = 0; i < D; ++i) {
       const bool high = (bits >> i) & 1;
-      l[i] = (high ? upper[i] : lower[i]) / radius;
+      l[i] = high ? hi[i] : lo[i];
       if (high) sign = -sign;
     }
-    sum += sign * orthant<D>(l);
+    sum += sign * corner<D>(l);
   }
   return std::max(sum, 0.0);
+}
+
+// |unit ball ∩ [lo, hi]|: reflect each axis into x_i >= 0, splitting a box
+// that straddles x_i = 0, so that only first-orthant boxes are evaluated
+// (no differences of large orthant volumes; 2^D corners for most cells).
+template <int D>
+double unit_overlap(std::array<double, D> lo, std::array<double, D> hi, int axis) {
+  for (int i = axis; i < D; ++i) {
+    if (hi[i] <= 0.0) {
+      const double reflected_lo = -hi[i];
+      hi[i] = -lo[i];
+      lo[i] = reflected_lo;
+    } else if (lo[i] < 0.0) {
+      std::array<double, D> negative_hi = hi;
+      negative_hi[i] = -lo[i];
+      lo[i] = 0.0;
+      std::array<double, D> negative_lo = lo;
+      return unit_overlap<D>(lo, hi, i + 1) + unit_overlap<D>(negative_lo, negative_hi, i + 1);
+    }
+  }
+  double near2 = 0.0;
+  for (int i = 0; i < D; ++i) near2 += lo[i] * lo[i];
+  if (near2 >= 1.0) return 0.0;
+  return positive_box<D>(lo, hi);
+}
+
+template <int D>
+double scaled_overlap(std::span<const double> lower, std::span<const double> upper, double radius) {
+  std::array<double, D> lo{};
+  std::array<double, D> hi{};
+  for (int i = 0; i < D; ++i) {
+    lo[i] = lower[i] / radius;
+    hi[i] = upper[i] / radius;
+  }
+  return std::pow(radius, D) * unit_overlap<D>(lo, hi, 0);
 }
 
 }  // namespace
@@ -129,8 +151,8 @@ double ball_box_overlap(std::span<const double> lower, std::span<const double> u
                   std::to_string(i) + " must not exceed the upper bound " +
                   std::to_string(upper[i]));
   if (radius <= 0.0) return 0.0;
-  if (lower.size() == 2) return radius * radius * unit_overlap<2>(lower, upper, radius);
-  return radius * radius * radius * unit_overlap<3>(lower, upper, radius);
+  if (lower.size() == 2) return scaled_overlap<2>(lower, upper, radius);
+  return scaled_overlap<3>(lower, upper, radius);
 }
 
 }  // namespace mpfd::coupler::remap

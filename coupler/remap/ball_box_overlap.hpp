@@ -4,15 +4,14 @@
 // The conservative 1D -> Cartesian remap (S, steps (1)-(4)) needs the volume
 // of every cell-shell intersection; a shell is the difference of two balls.
 //
-// Inclusion-exclusion over the 2^d box corners reduces the box to orthants
-//   G(l) = |B_R ∩ {x_i >= l_i}|,
-// reflections x_i -> -x_i reduce a negative l_i to a positive one
-//   G(.., l_i < 0, ..) = 2 G(.., 0, ..) - G(.., -l_i, ..),
-// and for l_i >= 0 the corner of the unit disc / ball is integrated exactly:
+// Reflections x_i -> -x_i (and a split where the box straddles x_i = 0)
+// bring every piece into the first orthant; there inclusion-exclusion over
+// the 2^d corners reduces a box to corners G(l) = |B_1 ∩ {x_i >= l_i}|,
+// l_i >= 0, which are integrated exactly:
 //   2D  C(a, b)    = (pi/2 - asin a - asin b)/2 - (a sqrt(1-a^2) + b sqrt(1-b^2))/2 + a b
 //   3D  W(a, b, c) = F(X) - F(a),  X = sqrt(1 - b^2 - c^2),  F' = C scaled to the slice
 // (derivation in coupler/remap/README.md). Round-off: a few ulp of the
-// largest orthant volume involved, i.e. ~1e-16 R h^2 for a cell of size h
+// largest corner volume involved, i.e. ~1e-16 R h^2 for a cell of size h
 // cut by a sphere of radius R.
 
 #include <span>

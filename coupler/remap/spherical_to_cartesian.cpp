@@ -118,6 +118,7 @@ CartesianFields remap_radial_profile(const grid::UniformGrid& grid, const grid::
   out.material_count = materials;
   out.volume_fraction.assign(static_cast<std::size_t>(materials) * cells, 0.0);
   out.material_mass.assign(static_cast<std::size_t>(materials) * cells, 0.0);
+  out.material_internal_energy.assign(static_cast<std::size_t>(materials) * cells, 0.0);
   if (has_stress)
     for (auto& s : out.stress) s.assign(cells, 0.0);
 
@@ -141,6 +142,7 @@ CartesianFields remap_radial_profile(const grid::UniformGrid& grid, const grid::
       const auto r = static_cast<std::size_t>(profile.material[k]);
       out.volume_fraction[r * cells + c] += v / volume;
       out.material_mass[r * cells + c] += m;
+      out.material_internal_energy[r * cells + c] += m * profile.internal_energy[k];
       if (has_stress) {
         sigma_rr += profile.radial_stress[k] * v;
         sigma_tt += profile.hoop_stress[k] * v;

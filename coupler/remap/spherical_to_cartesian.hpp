@@ -38,6 +38,9 @@ struct CartesianFields {
   int material_count = 0;
   std::vector<double> volume_fraction;  ///< [r * cells + c]: sum_{k of r} V_ck / V_c
   std::vector<double> material_mass;    ///< [r * cells + c] [kg]
+  /// [r * cells + c]: sum_{k of r} rho_k e_k V_ck [J], so that rho_r = m_r / (theta_r V_c)
+  /// and e_r = this / m_r feed handoff::fdm_to_mpm (S step (4)).
+  std::vector<double> material_internal_energy;
   /// xx, yy, zz, xy, yz, zx per cell [Pa]; empty unless the profile has stresses.
   std::array<std::vector<double>, 6> stress;
 };
