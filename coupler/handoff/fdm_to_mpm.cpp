@@ -136,9 +136,10 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
   const auto regular = static_cast<std::size_t>(corner_count(grid));
   const double volume = grid.cell_volume();
   const TracerBins bins = bin_tracers(grid, state.tracers);
-  const auto theta = [&](int r, std::size_t c) {
-    return state.volume_fraction[static_cast<std::size_t>(r) * cells + c];
+  const auto index = [&](int r, std::size_t c) {
+    return c * static_cast<std::size_t>(state.material_count) + static_cast<std::size_t>(r);
   };
+  const auto theta = [&](int r, std::size_t c) { return state.volume_fraction[index(r, c)]; };
   const auto tracers_of = [&](int r, std::size_t c) {
     std::size_t n = 0;
     for (std::size_t i = bins.start[c]; i < bins.start[c + 1]; ++i)
@@ -179,8 +180,7 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
     }
     double raw_mass = 0.0;
     for (int r = 0; r < state.material_count; ++r)
-      if (theta(r, c) > 0.0)
-        raw_mass += state.material_density[static_cast<std::size_t>(r) * cells + c] * theta(r, c);
+      if (theta(r, c) > 0.0) raw_mass += state.material_density[index(r, c)] * theta(r, c);
     raw_mass *= volume;
     if (!(raw_mass > 0.0))
       throw Error("fdm_to_mpm: mixed cell " + std::to_string(c) + " holds mass " +
@@ -189,7 +189,7 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
     const double scale = s.mass / raw_mass;
     double material_internal = 0.0;
     for (int r = 0; r < state.material_count; ++r) {
-      const std::size_t at = static_cast<std::size_t>(r) * cells + c;
+      const std::size_t at = index(r, c);
       if (theta(r, c) > 0.0)
         material_internal +=
             scale * state.material_density[at] * theta(r, c) * volume * state.material_energy[at];
@@ -197,7 +197,7 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
     const double defect = s.internal_energy - material_internal;
     for (int r = 0; r < state.material_count; ++r) {
       if (!(theta(r, c) > 0.0)) continue;
-      const std::size_t at = static_cast<std::size_t>(r) * cells + c;
+      const std::size_t at = index(r, c);
       const double mass = scale * state.material_density[at] * theta(r, c) * volume;  // T (3-19)
       const double energy = mass * state.material_energy[at] + theta(r, c) * defect;
       const std::size_t nb = tracers_of(r, c);

@@ -32,7 +32,8 @@ namespace mpfd::coupler::handoff {
 inline constexpr int kMixedCell = -1;
 
 /// The FDM state at the end of phase 2; per-material arrays are laid out
-/// [r * cells + c] and read only where theta_r > 0 in a mixed cell.
+/// [c * material_count + r] (shape [n, materials] as in proto/README.md §7)
+/// and read only where theta_r > 0 in a mixed cell.
 struct FdmEnd {
   ConservedView cells;
   std::span<const double> pressure;    ///< p_c [Pa]

@@ -1,6 +1,7 @@
 #include "coupler/handoff/mpm_to_fdm.hpp"
 
 #include <string>
+#include <utility>
 
 #include "common/core/error.hpp"
 #include "common/core/parallel_for.hpp"
@@ -48,25 +49,43 @@ NodalFields scatter_to_nodes(const grid::UniformGrid& grid, const ParticleView& 
   return out;
 }
 
-FdmStart mpm_to_fdm(const grid::UniformGrid& grid, const NodalFields& nodes,
-                    const ParticleView& particles) {
+std::vector<double> cell_internal_energy(const grid::UniformGrid& grid,
+                                         const ParticleView& particles) {
   check_sizes(particles);
-  const std::size_t node_count = grid.node_count();
-  if (nodes.mass.size() != node_count || nodes.kinetic_energy.size() != node_count ||
-      nodes.momentum[0].size() != node_count || nodes.momentum[1].size() != node_count ||
-      nodes.momentum[2].size() != node_count)
-    throw Error("mpm_to_fdm: nodal fields must have " + std::to_string(node_count) +
-                " entries (the grid's node count), got mass " + std::to_string(nodes.mass.size()));
-  const std::size_t cells = grid.cell_count();
-  const double volume = grid.cell_volume();
-
-  std::vector<double> internal(cells, 0.0);
+  std::vector<double> internal(grid.cell_count(), 0.0);
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const grid::CellLocation where = locate_particle(grid, particles, p);
     internal[grid.cell_index(where.cell)] += particles.internal_energy[p];  // T (3-5)
   }
+  return internal;
+}
 
-  FdmStart out;
+TracerPoints tracers_from_particles(const ParticleView& particles) {
+  check_sizes(particles);
+  TracerPoints tracers;
+  tracers.material.assign(particles.material.begin(), particles.material.end());
+  for (int a = 0; a < 3; ++a)
+    tracers.position[a].assign(particles.position[a].begin(), particles.position[a].end());
+  return tracers;
+}
+
+FdmCells cells_from_nodes(const grid::UniformGrid& grid, const NodalFields& nodes,
+                          std::span<const double> cell_internal_energy) {
+  const std::size_t node_count = grid.node_count();
+  const std::size_t cells = grid.cell_count();
+  const bool with_kinetic = !nodes.kinetic_energy.empty();
+  const auto expect = [](std::size_t got, std::size_t want, const char* name) {
+    if (got != want)
+      throw Error(std::string("mpm_to_fdm: ") + name + " must have " + std::to_string(want) +
+                  " entries, got " + std::to_string(got));
+  };
+  expect(nodes.mass.size(), node_count, "node_mass");
+  for (const auto& p : nodes.momentum) expect(p.size(), node_count, "node_momentum");
+  if (with_kinetic) expect(nodes.kinetic_energy.size(), node_count, "node_kinetic_energy");
+  expect(cell_internal_energy.size(), cells, "cell_internal_energy");
+  const double volume = grid.cell_volume();
+
+  FdmCells out;
   out.cells.assign(cells);
   std::vector<double> heat(cells, 0.0);
   const int corners = corner_count(grid);
@@ -81,24 +100,23 @@ FdmStart mpm_to_fdm(const grid::UniformGrid& grid, const NodalFields& nodes,
       const std::size_t i = grid.node_index(node);
       m += share * nodes.mass[i];                                        // T (3-3)
       for (int a = 0; a < 3; ++a) p[a] += share * nodes.momentum[a][i];  // T (3-4)
-      kinetic += share * nodes.kinetic_energy[i];
+      if (with_kinetic) kinetic += share * nodes.kinetic_energy[i];
     }
-    out.cells.density[c] = m / volume;                                     // T (3-6)
-    for (int a = 0; a < 3; ++a) out.cells.momentum[a][c] = p[a] / volume;  // T (3-7)
-    out.cells.total_energy[c] = (internal[c] + kinetic) / volume;          // T (3-8)
     const double resolved = m > 0.0 ? 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / m : 0.0;
+    if (!with_kinetic) kinetic = resolved;
+    out.cells.density[c] = m / volume;                                         // T (3-6)
+    for (int a = 0; a < 3; ++a) out.cells.momentum[a][c] = p[a] / volume;      // T (3-7)
+    out.cells.total_energy[c] = (cell_internal_energy[c] + kinetic) / volume;  // T (3-8)
     heat[c] = kinetic - resolved;
   });
   for (const double h : heat) out.kinetic_to_internal += h;
-
-  out.tracers.material.assign(particles.material.begin(), particles.material.end());
-  for (int a = 0; a < 3; ++a)
-    out.tracers.position[a].assign(particles.position[a].begin(), particles.position[a].end());
   return out;
 }
 
 FdmStart mpm_to_fdm(const grid::UniformGrid& grid, const ParticleView& particles) {
-  return mpm_to_fdm(grid, scatter_to_nodes(grid, particles), particles);
+  FdmCells cells = cells_from_nodes(grid, scatter_to_nodes(grid, particles),
+                                    cell_internal_energy(grid, particles));
+  return {std::move(cells.cells), tracers_from_particles(particles), cells.kinetic_to_internal};
 }
 
 }  // namespace mpfd::coupler::handoff

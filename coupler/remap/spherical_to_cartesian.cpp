@@ -139,10 +139,11 @@ CartesianFields remap_radial_profile(const grid::UniformGrid& grid, const grid::
       radial_momentum += m * u;
       energy += m * (profile.internal_energy[k] + 0.5 * u * u);
       covered += v;
-      const auto r = static_cast<std::size_t>(profile.material[k]);
-      out.volume_fraction[r * cells + c] += v / volume;
-      out.material_mass[r * cells + c] += m;
-      out.material_internal_energy[r * cells + c] += m * profile.internal_energy[k];
+      const std::size_t at =
+          c * static_cast<std::size_t>(materials) + static_cast<std::size_t>(profile.material[k]);
+      out.volume_fraction[at] += v / volume;
+      out.material_mass[at] += m;
+      out.material_internal_energy[at] += m * profile.internal_energy[k];
       if (has_stress) {
         sigma_rr += profile.radial_stress[k] * v;
         sigma_tt += profile.hoop_stress[k] * v;
@@ -167,10 +168,10 @@ CartesianFields remap_radial_profile(const grid::UniformGrid& grid, const grid::
       // n^T. For the cylinder (2D) the axial stress is taken as the hoop stress.
       const double rr = sigma_rr / covered;
       const double tt = sigma_tt / covered;
-      constexpr std::array<std::array<int, 2>, 6> kComponents{
-          {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}}};
+      constexpr std::array<std::array<int, 2>, 6> kVoigt{
+          {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}}};
       for (std::size_t s = 0; s < 6; ++s) {
-        const auto [i, j] = kComponents[s];
+        const auto [i, j] = kVoigt[s];
         out.stress[s][c] = (i == j ? tt : 0.0) + (rr - tt) * n[i] * n[j];
       }
     }

@@ -36,12 +36,14 @@ struct CartesianFields {
   std::vector<double> total_energy;             ///< E_c / V_c [J/m^3]
   std::vector<double> covered_fraction;         ///< sum_k V_ck / V_c; < 1 where the profile ends
   int material_count = 0;
-  std::vector<double> volume_fraction;  ///< [r * cells + c]: sum_{k of r} V_ck / V_c
-  std::vector<double> material_mass;    ///< [r * cells + c] [kg]
-  /// [r * cells + c]: sum_{k of r} rho_k e_k V_ck [J], so that rho_r = m_r / (theta_r V_c)
+  // Per-material arrays: [c * material_count + r], shape [n, materials] as in proto §7.
+  std::vector<double> volume_fraction;  ///< sum_{k of r} V_ck / V_c
+  std::vector<double> material_mass;    ///< [kg]
+  /// sum_{k of r} rho_k e_k V_ck [J], so that rho_r = m_r / (theta_r V_c)
   /// and e_r = this / m_r feed handoff::fdm_to_mpm (S step (4)).
   std::vector<double> material_internal_energy;
-  /// xx, yy, zz, xy, yz, zx per cell [Pa]; empty unless the profile has stresses.
+  /// Voigt xx, yy, zz, yz, xz, xy per cell [Pa] (as proto particles.proto);
+  /// empty unless the profile has stresses.
   std::array<std::vector<double>, 6> stress;
 };
 

@@ -14,7 +14,8 @@ namespace {
 
 using test::kRoundOff;
 
-// An FDM end state with two materials: random conserved fields, every
+// An FDM end state with two materials (per-material arrays [c * 2 + r]):
+// random conserved fields, every
 // third cell mixed with tracers of both materials, the per-material
 // densities off the closure's sum by up to 1 % (the handoff must still
 // conserve), the rest single-material with tracers to be discarded.
@@ -64,21 +65,21 @@ Phase2State random_state(const grid::UniformGrid& grid, unsigned seed) {
     if (c % 3 == 0) {
       s.cell_material[c] = kMixedCell;
       const double theta0 = 0.2 + 0.6 * unit(rng);
-      s.theta[c] = theta0;
-      s.theta[n + c] = 1.0 - theta0;
+      s.theta[2 * c] = theta0;
+      s.theta[2 * c + 1] = 1.0 - theta0;
       // Products dense, air light; sum rho_r theta_r = rho (1 + 0.01 noise).
       const double rho0 = rho * (1.5 + 0.01 * unit(rng));
-      s.rho_r[c] = rho0;
-      s.rho_r[n + c] = (rho - rho0 * theta0) / (1.0 - theta0) > 0.0
-                           ? (rho - rho0 * theta0) / (1.0 - theta0)
-                           : 0.1 * rho;
-      s.e_r[c] = e * 1.3;
-      s.e_r[n + c] = e * 0.8;
+      s.rho_r[2 * c] = rho0;
+      s.rho_r[2 * c + 1] = (rho - rho0 * theta0) / (1.0 - theta0) > 0.0
+                               ? (rho - rho0 * theta0) / (1.0 - theta0)
+                               : 0.1 * rho;
+      s.e_r[2 * c] = e * 1.3;
+      s.e_r[2 * c + 1] = e * 0.8;
       for (int k = 0; k < 3; ++k) add_tracer(0);
       for (int k = 0; k < 2; ++k) add_tracer(1);
     } else {
       s.cell_material[c] = static_cast<int>(c % 2);
-      s.theta[static_cast<std::size_t>(c % 2) * n + c] = 1.0;
+      s.theta[2 * c + c % 2] = 1.0;
       add_tracer(s.cell_material[c]);
     }
   }
@@ -133,7 +134,6 @@ TEST(FdmToMpm, Mixed_cell_tracers_become_particles_sharing_by_volume_fraction_T_
   // Cell 0 is mixed, with 3 tracers of material 0 and 2 of material 1: the
   // first 5 particles, at the tracers' positions.
   ASSERT_EQ(state.cell_material[0], kMixedCell);
-  const std::size_t n = grid.cell_count();
   double mass0 = 0.0;
   double mass1 = 0.0;
   for (std::size_t p = 0; p < 5; ++p) {
@@ -141,7 +141,7 @@ TEST(FdmToMpm, Mixed_cell_tracers_become_particles_sharing_by_volume_fraction_T_
     EXPECT_EQ(particles.material[p], state.tracers.material[p]);
     (particles.material[p] == 0 ? mass0 : mass1) += particles.mass[p];
   }
-  EXPECT_NEAR(mass0 / mass1, state.rho_r[0] * state.theta[0] / (state.rho_r[n] * state.theta[n]),
+  EXPECT_NEAR(mass0 / mass1, state.rho_r[0] * state.theta[0] / (state.rho_r[1] * state.theta[1]),
               1e-13);
   EXPECT_NEAR(mass0 + mass1, state.cells.density[0] * grid.cell_volume(),
               kRoundOff * (mass0 + mass1));

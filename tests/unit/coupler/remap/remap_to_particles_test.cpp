@@ -51,7 +51,7 @@ TEST(RemapToParticles, TNT_sphere_in_water_keeps_mass_and_energy_to_round_off) {
   for (std::size_t c = 0; c < n; ++c) {
     int present = 0;
     for (std::size_t r = 0; r < 2; ++r) {
-      const std::size_t at = r * n + c;
+      const std::size_t at = c * 2 + r;
       if (f.volume_fraction[at] <= 0.0) continue;
       ++present;
       cell_material[c] = static_cast<int>(r);
