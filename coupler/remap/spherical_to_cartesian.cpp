@@ -164,8 +164,8 @@ CartesianFields remap_radial_profile(const grid::UniformGrid& grid, const grid::
     out.total_energy[c] = energy / volume;
     out.covered_fraction[c] = covered / volume;
     if (has_stress && covered > 0.0) {
-      // S (19): B = R^T diag(sigma_rr, sigma_tt, sigma_tt) R = sigma_tt I + (sigma_rr - sigma_tt) n
-      // n^T. For the cylinder (2D) the axial stress is taken as the hoop stress.
+      // S (19): B = R^T diag(rr, tt, tt) R = tt I + (rr - tt) n n^T, volume-averaged
+      // rr, tt. For the cylinder (2D) the axial stress is taken as the hoop stress.
       const double rr = sigma_rr / covered;
       const double tt = sigma_tt / covered;
       constexpr std::array<std::array<int, 2>, 6> kVoigt{
