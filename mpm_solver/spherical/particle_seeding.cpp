@@ -70,8 +70,15 @@ void seed_particles(const std::vector<RadialLayer>& layers, const SphericalOptio
     const RadialLayer& source = layers[layer];
     for (std::size_t j = 0; j < per_cell; ++j) {
       const std::size_t p = c * per_cell + j;
-      const double r = centre + 0.5 * h * rule.points[j];
-      const double volume = 0.5 * h * rule.weights[j] * r * r;  // = (r2^3 - r1^3)/3 of its shell
+      double r = centre + 0.5 * h * rule.points[j];
+      double volume = 0.5 * h * rule.weights[j] * r * r;  // = (r2^3 - r1^3)/3 of its shell
+      if (options.shape == RadialShape::gimp) {
+        // Equal sub-shells whose GIMP domains tile the cell.
+        const double r1 = (static_cast<double>(c) + static_cast<double>(j) / static_cast<double>(per_cell)) * h;
+        const double r2 = r1 + h / static_cast<double>(per_cell);
+        r = 0.5 * (r1 + r2);
+        volume = (r2 * r2 * r2 - r1 * r1 * r1) / 3.0;
+      }
       particles.radius[p] = r;
       particles.density[p] = source.density;
       particles.mass[p] = source.density * volume;  // S eq. (1)

@@ -8,7 +8,9 @@
 // mass is S eq. (1), m = rho (r2^3 - r1^3) / 3. Placing them at Gauss points
 // makes the particle quadrature of the weak form exact at t = 0 for linear
 // shape functions (the integrands times r^2 are cubic at most), so a uniform
-// stress produces no nodal force, at r = 0 or elsewhere.
+// stress produces no nodal force, at r = 0 or elsewhere. With GIMP shapes the
+// particles sit at the middle of n equal sub-shells instead, which their GIMP
+// domains tile (radial_shape.hpp); the mass is again S eq. (1).
 
 #include <vector>
 

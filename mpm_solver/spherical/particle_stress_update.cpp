@@ -9,15 +9,14 @@ namespace mpfd::mpm::spherical {
 void update_particle_stress(SphericalParticles& particles, const RadialGrid& grid,
                             const ParticleWeights& weights, const MaterialTable& materials,
                             const StressUpdateSettings& settings, double time_new, double dt) {
-  const double h = grid.spacing;
   parallel_for(particles.size(), [&](std::size_t p) {
     const RadialWeights& w = weights[p];
-    const std::size_t c = w.cell;
-    const double radius_old = (static_cast<double>(c) + w.right) * h;  // r_p^n
-    const double v_left = grid.velocity[c];
-    const double v_right = grid.velocity[c + 1];
-    const double radial = (v_right - v_left) / h * dt;                          // S eq. (11)
-    const double hoop = (w.left * v_left + w.right * v_right) / radius_old * dt;  // S eq. (11)
+    double radial = 0.0;
+    double hoop = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      radial += w.gradient[k] * grid.velocity[w.first + k] * dt;  // S eq. (11)
+      hoop += w.hoop[k] * grid.velocity[w.first + k] * dt;  // S eq. (11): v / r at r_p^n
+    }
     const double volumetric = radial + 2.0 * hoop;
 
     StrainStep step;

@@ -40,18 +40,25 @@ SphericalMpm::SphericalMpm(std::vector<RadialLayer> layers, SphericalOptions opt
       models_[m]->update(still, point);
     }
   }
+  ambient_pressure_ = particles_.pressure.back();
+  if (options_.shape == RadialShape::linear &&
+      options_.outer_boundary == OuterBoundary::transmitting && ambient_pressure_ != 0.0)
+    throw Error("spherical MPM: a transmitting boundary holding an ambient pressure (" +
+                std::to_string(ambient_pressure_) +
+                " Pa) needs shape gimp; with linear shapes it is unstable (README)");
   const auto cells = static_cast<std::size_t>(
       std::lround(layers_.back().outer_radius / options_.grid_spacing));
   grid_.spacing = options_.grid_spacing;
-  grid_.resize(cells + static_cast<std::size_t>(options_.margin_cells) + 1);
+  grid_.resize(cells + static_cast<std::size_t>(options_.margin_cells) + 2);
   weights_.resize(particles_.size());
 }
 
 void SphericalMpm::advance(double dt) {
   if (!(dt > 0.0)) throw Error("spherical MPM: dt must be > 0 s, got " + std::to_string(dt));
-  scatter_to_grid(particles_, grid_, weights_);  // T (2-9), (2-12), S eq. (7)
+  scatter_to_grid(particles_, options_.shape, 0.5 / options_.particles_per_cell, grid_,
+                  weights_);  // T (2-9), (2-12), S eq. (7)
   if (options_.outer_boundary == OuterBoundary::transmitting)
-    add_transmitting_traction(particles_, weights_, grid_);
+    add_transmitting_traction(particles_, ambient_pressure_, grid_);
   integrate_grid(grid_, dt);                                // T (2-13)
   update_particle_motion(particles_, grid_, weights_, dt);  // T (2-15), (2-16)
   remap_grid_velocity(particles_, weights_, grid_);         // T (2-17)

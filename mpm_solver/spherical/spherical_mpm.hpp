@@ -68,6 +68,7 @@ class SphericalMpm {
   SphericalParticles particles_;
   RadialGrid grid_;
   ParticleWeights weights_;
+  double ambient_pressure_ = 0.0;  ///< initial pressure of the outermost particle [Pa]
   double time_ = 0.0;
 };
 

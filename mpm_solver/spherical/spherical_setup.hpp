@@ -20,7 +20,8 @@ struct RadialLayer {
 /// The surface of the outermost layer.
 enum class OuterBoundary {
   free,          ///< traction free
-  transmitting,  ///< impedance traction -rho c v, absorbs a normally incident outgoing wave
+  transmitting,  ///< traction -(p_ambient + rho c v): holds the initial outer pressure and
+                 ///< absorbs a normally incident outgoing wave
 };
 
 /// Linear + quadratic artificial bulk viscosity, S eq. (16) (rebuilt, README).
@@ -29,10 +30,17 @@ struct BulkViscosity {
   double linear = 0.06;    ///< c1 [-] (LS-DYNA default Q2)
 };
 
+/// Shape functions of the radial grid (radial_shape.hpp).
+enum class RadialShape {
+  linear,  ///< standard MPM as seed S and T (2-7); cell-crossing noise (README)
+  gimp,    ///< GIMP shells of half-width h / (2 particles_per_cell), exact moments
+};
+
 struct SphericalOptions {
   double grid_spacing = 0.0;  ///< h [m]; also l_e of S eq. (16)
   int particles_per_cell = 2;  ///< >= 2: Gauss-Legendre points of each cell (README)
   double cfl = 0.5;            ///< Courant number of stable_dt() [-], in (0, 1]
+  RadialShape shape = RadialShape::gimp;
   BulkViscosity viscosity;
   OuterBoundary outer_boundary = OuterBoundary::transmitting;
   int margin_cells = 8;  ///< empty grid cells beyond the outer layer, room to expand into
