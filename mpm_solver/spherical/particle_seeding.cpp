@@ -27,9 +27,10 @@ void validate(const std::vector<RadialLayer>& layers, const SphericalOptions& op
     throw Error("spherical MPM: grid_spacing must be > 0 m, got " +
                 std::to_string(options.grid_spacing));
   if (options.particles_per_cell < 2)
-    throw Error("spherical MPM: particles_per_cell must be >= 2 (Gauss points that partition "
-                "each shell), got " +
-                std::to_string(options.particles_per_cell));
+    throw Error(
+        "spherical MPM: particles_per_cell must be >= 2 (Gauss points that partition "
+        "each shell), got " +
+        std::to_string(options.particles_per_cell));
   if (!(options.cfl > 0.0 && options.cfl <= 1.0))
     throw Error("spherical MPM: cfl must be in (0, 1], got " + std::to_string(options.cfl));
   if (options.margin_cells < 1)
@@ -74,7 +75,8 @@ void seed_particles(const std::vector<RadialLayer>& layers, const SphericalOptio
       double volume = 0.5 * h * rule.weights[j] * r * r;  // = (r2^3 - r1^3)/3 of its shell
       if (options.shape == RadialShape::gimp) {
         // Equal sub-shells whose GIMP domains tile the cell.
-        const double r1 = (static_cast<double>(c) + static_cast<double>(j) / static_cast<double>(per_cell)) * h;
+        const double r1 =
+            (static_cast<double>(c) + static_cast<double>(j) / static_cast<double>(per_cell)) * h;
         const double r2 = r1 + h / static_cast<double>(per_cell);
         r = 0.5 * (r1 + r2);
         volume = (r2 * r2 * r2 - r1 * r1 * r1) / 3.0;

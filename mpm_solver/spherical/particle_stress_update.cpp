@@ -15,7 +15,7 @@ void update_particle_stress(SphericalParticles& particles, const RadialGrid& gri
     double hoop = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
       radial += w.gradient[k] * grid.velocity[w.first + k] * dt;  // S eq. (11)
-      hoop += w.hoop[k] * grid.velocity[w.first + k] * dt;  // S eq. (11): v / r at r_p^n
+      hoop += w.hoop[k] * grid.velocity[w.first + k] * dt;        // S eq. (11): v / r at r_p^n
     }
     const double volumetric = radial + 2.0 * hoop;
 
@@ -25,9 +25,9 @@ void update_particle_stress(SphericalParticles& particles, const RadialGrid& gri
     step.density_old = particles.density[p];
     step.density_new = particles.density[p] / (1.0 + volumetric);  // T (2-20)
     const double rate = volumetric / dt;
-    step.bulk_viscosity = bulk_viscosity(settings.viscosity, step.density_new,
-                                         settings.viscous_length, rate,
-                                         particles.sound_speed[p]);  // S eq. (16)
+    step.bulk_viscosity =
+        bulk_viscosity(settings.viscosity, step.density_new, settings.viscous_length, rate,
+                       particles.sound_speed[p]);  // S eq. (16)
     const auto m = static_cast<std::size_t>(particles.material[p]);
     if (materials.detonation_velocity[m] > 0.0)
       particles.burn_fraction[p] =

@@ -9,12 +9,12 @@
 namespace mpfd::mpm::spherical {
 
 struct RadialGrid {
-  double spacing = 0.0;           ///< h [m]
-  std::vector<double> mass;       ///< m_I, T (2-12)
-  std::vector<double> momentum;   ///< p_I, T (2-9), then p_I^{n+1}, T (2-13)
-  std::vector<double> force;      ///< f_I = f_int + f_ext, T (2-14)
-  std::vector<double> velocity;   ///< v_I^{n+1} from the remap, T (2-17)
-  std::vector<double> dashpot;    ///< boundary dashpot eta_I, force -eta_I v_I^{n+1} [kg/(s sr)]
+  double spacing = 0.0;          ///< h [m]
+  std::vector<double> mass;      ///< m_I, T (2-12)
+  std::vector<double> momentum;  ///< p_I, T (2-9), then p_I^{n+1}, T (2-13)
+  std::vector<double> force;     ///< f_I = f_int + f_ext, T (2-14)
+  std::vector<double> velocity;  ///< v_I^{n+1} from the remap, T (2-17)
+  std::vector<double> dashpot;   ///< boundary dashpot eta_I, force -eta_I v_I^{n+1} [kg/(s sr)]
 
   void resize(std::size_t nodes) {
     for (auto* f : {&mass, &momentum, &force, &velocity, &dashpot}) f->assign(nodes, 0.0);

@@ -11,7 +11,6 @@
 // B_I + 2 C_I = [N_I r^2]_D / V_D, shells that tile [0, R] give no nodal force
 // under uniform stress, at r = 0 or elsewhere.
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,10 +19,10 @@
 namespace mpfd::mpm::spherical {
 
 struct RadialWeights {
-  std::size_t first = 0;                   ///< index of the first node
-  std::array<double, 3> value{};           ///< N (or S) of nodes first, first+1, first+2
-  std::array<double, 3> gradient{};        ///< dN/dr (GIMP: B_I) [1/m]
-  std::array<double, 3> hoop{};            ///< N / r (GIMP: C_I) [1/m]
+  std::size_t first = 0;             ///< index of the first node
+  std::array<double, 3> value{};     ///< N (or S) of nodes first, first+1, first+2
+  std::array<double, 3> gradient{};  ///< dN/dr (GIMP: B_I) [1/m]
+  std::array<double, 3> hoop{};      ///< N / r (GIMP: C_I) [1/m]
 };
 
 [[nodiscard]] inline RadialWeights linear_weights(double r, double inverse_spacing) noexcept {
@@ -37,7 +36,8 @@ struct RadialWeights {
 }
 
 /// The GIMP weights of the shell [r - l, r + l] (0 < l <= h/2, r >= l).
-[[nodiscard]] inline RadialWeights gimp_weights(double r, double spacing, double half_width) noexcept {
+[[nodiscard]] inline RadialWeights gimp_weights(double r, double spacing,
+                                                double half_width) noexcept {
   const double a = std::max(0.0, r - half_width);  // no shell inside the centre
   const double b = r + half_width;
   const double volume = (b * b * b - a * a * a) / 3.0;
@@ -50,8 +50,8 @@ struct RadialWeights {
     const double lo = std::max(a, x0);
     const double hi = std::min(b, x0 + spacing);
     if (hi <= lo) continue;
-    const double m1 = (hi * hi - lo * lo) / 2.0;               // int r dr
-    const double m2 = (hi * hi * hi - lo * lo * lo) / 3.0;     // int r^2 dr
+    const double m1 = (hi * hi - lo * lo) / 2.0;                      // int r dr
+    const double m2 = (hi * hi * hi - lo * lo * lo) / 3.0;            // int r^2 dr
     const double m3 = (hi * hi * hi * hi - lo * lo * lo * lo) / 4.0;  // int r^3 dr
     const std::size_t k = cell - first;
     const double right_value = (m3 - x0 * m2) / spacing;  // int N_right r^2 dr

@@ -29,7 +29,7 @@ void scatter_to_grid(const SphericalParticles& particles, RadialShape shape,
     const double sigma_hoop = particles.stress_hoop(p);
     for (std::size_t k = 0; k < 3; ++k) {
       const std::size_t i = w.first + k;
-      grid.mass[i] += w.value[k] * m;                               // T (2-12)
+      grid.mass[i] += w.value[k] * m;                              // T (2-12)
       grid.momentum[i] += w.value[k] * m * particles.velocity[p];  // T (2-9)
       grid.force[i] -=
           volume * (sigma_rr * w.gradient[k] + 2.0 * sigma_hoop * w.hoop[k]);  // S eq. (7)
@@ -90,8 +90,8 @@ void update_particle_motion(SphericalParticles& particles, const RadialGrid& gri
     return particles.radius[p] < limit ? 0 : 1;  // also catches a NaN radius
   });
   if (escaped > 0)
-    throw Error("spherical MPM: " + std::to_string(escaped) +
-                " particle(s) moved beyond radius " + std::to_string(limit) +
+    throw Error("spherical MPM: " + std::to_string(escaped) + " particle(s) moved beyond radius " +
+                std::to_string(limit) +
                 " m, one cell inside the grid; expected margin_cells to hold them");
 }
 

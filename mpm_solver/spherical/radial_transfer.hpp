@@ -28,10 +28,9 @@ void scatter_to_grid(const SphericalParticles& particles, RadialShape shape,
                      double half_width_cells, RadialGrid& grid, ParticleWeights& weights);
 
 /// Adds the traction -(p_ambient + rho c v) at the outer surface r_s (the
-/// outer edge of the outermost particle's shell, the particle at its middle), rho c of the outermost
-/// particle: a plane-wave non-reflecting boundary (exact for r >> wavelength)
-/// that holds the medium's initial pressure. The rho c v part is a dashpot
-/// integrate_grid() takes implicitly.
+/// outer edge of the outermost particle's shell, the particle at its middle), rho c of the
+/// outermost particle: a plane-wave non-reflecting boundary (exact for r >> wavelength) that holds
+/// the medium's initial pressure. The rho c v part is a dashpot integrate_grid() takes implicitly.
 void add_transmitting_traction(const SphericalParticles& particles, double ambient_pressure,
                                RadialGrid& grid);
 

@@ -46,8 +46,8 @@ SphericalMpm::SphericalMpm(std::vector<RadialLayer> layers, SphericalOptions opt
     throw Error("spherical MPM: a transmitting boundary holding an ambient pressure (" +
                 std::to_string(ambient_pressure_) +
                 " Pa) needs shape gimp; with linear shapes it is unstable (README)");
-  const auto cells = static_cast<std::size_t>(
-      std::lround(layers_.back().outer_radius / options_.grid_spacing));
+  const auto cells =
+      static_cast<std::size_t>(std::lround(layers_.back().outer_radius / options_.grid_spacing));
   grid_.spacing = options_.grid_spacing;
   grid_.resize(cells + static_cast<std::size_t>(options_.margin_cells) + 2);
   weights_.resize(particles_.size());

@@ -3,10 +3,9 @@
 namespace mpfd::mpm::spherical {
 
 void SphericalParticles::resize(std::size_t n, std::size_t stride) {
-  for (auto* f : {&radius, &velocity, &mass, &density, &pressure, &bulk_viscosity,
-                  &volumetric_rate, &specific_internal_energy, &sound_speed,
-                  &equivalent_plastic_strain, &plastic_work, &damage, &temperature,
-                  &lighting_time, &burn_fraction})
+  for (auto* f : {&radius, &velocity, &mass, &density, &pressure, &bulk_viscosity, &volumetric_rate,
+                  &specific_internal_energy, &sound_speed, &equivalent_plastic_strain,
+                  &plastic_work, &damage, &temperature, &lighting_time, &burn_fraction})
     f->assign(n, 0.0);
   deviatoric_stress.assign(n, Tensor3::Zero());
   material.assign(n, 0);

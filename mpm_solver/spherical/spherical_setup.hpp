@@ -10,11 +10,11 @@ namespace mpfd::mpm::spherical {
 
 /// One shell of material from the previous layer's outer radius (0 for the first) to outer_radius.
 struct RadialLayer {
-  config::Material material;            ///< EOS and strength; an explosive needs material.explosive
-  double outer_radius = 0.0;            ///< [m], on a grid line (a multiple of the grid spacing)
-  double density = 0.0;                 ///< initial density [kg/m^3]
+  config::Material material;  ///< EOS and strength; an explosive needs material.explosive
+  double outer_radius = 0.0;  ///< [m], on a grid line (a multiple of the grid spacing)
+  double density = 0.0;       ///< initial density [kg/m^3]
   double specific_internal_energy = 0.0;  ///< initial e [J/kg]; TNT: E0 / rho0
-  bool explosive = false;               ///< program burn from r = 0, T (3-1), (3-2)
+  bool explosive = false;                 ///< program burn from r = 0, T (3-1), (3-2)
 };
 
 /// The surface of the outermost layer.
@@ -37,7 +37,7 @@ enum class RadialShape {
 };
 
 struct SphericalOptions {
-  double grid_spacing = 0.0;  ///< h [m]; also l_e of S eq. (16)
+  double grid_spacing = 0.0;   ///< h [m]; also l_e of S eq. (16)
   int particles_per_cell = 2;  ///< >= 2: Gauss-Legendre points of each cell (README)
   double cfl = 0.5;            ///< Courant number of stable_dt() [-], in (0, 1]
   RadialShape shape = RadialShape::gimp;
