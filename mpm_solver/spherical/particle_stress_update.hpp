@@ -27,7 +27,7 @@ struct MaterialTable {
 struct StressUpdateSettings {
   BulkViscosity viscosity;
   double viscous_length = 0.0;   ///< l_e = grid spacing [m], S eq. (16)
-  double particle_length = 0.0;  ///< h of T (3-2) [m]
+  double particle_length = 0.0;  ///< h of T (3-2) [m], the grid spacing (program_burn.hpp)
 };
 
 /// Advances density, q, F and the constitutive state of every particle to time_new.

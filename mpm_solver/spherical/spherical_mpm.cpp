@@ -23,8 +23,7 @@ SphericalMpm::SphericalMpm(std::vector<RadialLayer> layers, SphericalOptions opt
         layer.explosive ? layer.material.explosive->detonation_velocity : 0.0);
     stride = std::max(stride, static_cast<std::size_t>(models_.back()->history_count()));
   }
-  settings_ = {options_.viscosity, options_.grid_spacing,
-               options_.grid_spacing / options_.particles_per_cell};
+  settings_ = {options_.viscosity, options_.grid_spacing, options_.grid_spacing};
   seed_particles(layers_, options_, stride, particles_);
 
   for (std::size_t p = 0; p < particles_.size(); ++p) {

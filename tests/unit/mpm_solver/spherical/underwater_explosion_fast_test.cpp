@@ -1,6 +1,6 @@
 // V10 (METHOD.md), fast variant: seed S's underwater TNT sphere at h = 20 mm
 // with water to 2.5 m, peak pressures at R/a = 10, 15, 20 against Cole's law.
-// Measured (GIMP): +33.6 %, +15.9 %, +6.9 %; the full-tier test runs S's case.
+// Measured (GIMP): +33.2 %, +15.7 %, +6.7 %; the full-tier test runs S's case.
 #include <gtest/gtest.h>
 
 #include "underwater_case.hpp"
