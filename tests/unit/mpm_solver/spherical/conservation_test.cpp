@@ -3,7 +3,7 @@
 // conserved up to the time-integration error, q included (it enters the
 // energy equation (2-4) as it enters the stress). The totals include the
 // ambient gas's internal energy (1.04 MJ of 1.12 MJ): the -1.2e-3 measured at
-// CFL 0.5 is 1.3 kJ, 1.6 % of the 84 kJ excess energy of the sphere.
+// CFL 0.5 is 1.3 kJ, 1.6 % of the 84 kJ internal energy of the hot sphere.
 #include <gtest/gtest.h>
 
 #include <cmath>
