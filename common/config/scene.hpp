@@ -157,6 +157,8 @@ struct FdmOptions {
 struct MpmOptions {
   ShapeFunction shape_function = ShapeFunction::linear;
   MpmUpdate update = MpmUpdate::musl;
+  double bulk_viscosity_quadratic = 1.5;  ///< c0 of the artificial bulk viscosity (S) [-]
+  double bulk_viscosity_linear = 0.06;    ///< c1 of the artificial bulk viscosity (S) [-]
 };
 
 struct Solver {
