@@ -158,40 +158,36 @@ void MpmSolver::particles_to_grid() {
   double* node_momentum[3] = {grid_.momentum[0].data(), grid_.momentum[1].data(),
                               grid_.momentum[2].data()};
   double* node_force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
-  dispatch_stencil(settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
-                   [&](auto width, auto mask) {
-                     using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-                     for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
-                       const double x[3] = {ps.position[0][p], ps.position[1][p],
-                                            ps.position[2][p]};
-                       S s;
-                       compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_,
-                                       grid_, s);
-                       const double m = ps.mass[p];
-                       const double volume = m / ps.density[p];
-                       const double v[3] = {ps.velocity[0][p], ps.velocity[1][p],
-                                            ps.velocity[2][p]};
-                       // sigma = s - (p + q) I, tension positive.
-                       const double pq = ps.pressure[p] + ps.bulk_viscosity[p];
-                       const auto& d = ps.deviatoric_stress;
-                       const double sigma[3][3] = {
-                           {d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
-                           {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
-                           {d[kZX][p], d[kYZ][p], d[kZZ][p] - pq}};
-                       for (int c = 0; c < S::kCount; ++c) {
-                         const std::size_t node = s.node[c];
-                         const double wm = s.weight[c] * m;
-                         node_mass[node] += wm;  // (2-12)
-                         const double* gr = s.gradient[c];
-                         for (int i = 0; i < 3; ++i) {
-                           node_momentum[i][node] += wm * v[i];  // (2-9)
-                           node_force[i][node] -=               // (2-10)
-                               volume *
-                               (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
-                         }
-                       }
-                     });
-                   });
+  dispatch_stencil(
+      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
+      [&](auto width, auto mask) {
+        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+        for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
+          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+          S s;
+          compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
+          const double m = ps.mass[p];
+          const double volume = m / ps.density[p];
+          const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
+          // sigma = s - (p + q) I, tension positive.
+          const double pq = ps.pressure[p] + ps.bulk_viscosity[p];
+          const auto& d = ps.deviatoric_stress;
+          const double sigma[3][3] = {{d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
+                                      {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
+                                      {d[kZX][p], d[kYZ][p], d[kZZ][p] - pq}};
+          for (int c = 0; c < S::kCount; ++c) {
+            const std::size_t node = s.node[c];
+            const double wm = s.weight[c] * m;
+            node_mass[node] += wm;  // (2-12)
+            const double* gr = s.gradient[c];
+            for (int i = 0; i < 3; ++i) {
+              node_momentum[i][node] += wm * v[i];  // (2-9)
+              node_force[i][node] -=                // (2-10)
+                  volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
+            }
+          }
+        });
+      });
 }
 
 void MpmSolver::integrate_nodes(double dt) {
@@ -255,44 +251,41 @@ void MpmSolver::apply_face_conditions(std::array<std::vector<double>, 3>& field,
 void MpmSolver::update_velocities(double dt) {
   auto& ps = particles_;
   const auto& accel = grid_.force;
-  dispatch_stencil(settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
-                   [&](auto width, auto mask) {
-                     using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-                     parallel_for(ps.size(), [&](std::size_t p) {
-                       const double x[3] = {ps.position[0][p], ps.position[1][p],
-                                            ps.position[2][p]};
-                       S s;
-                       compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_,
-                                       grid_, s);
-                       double dv[3] = {0.0, 0.0, 0.0};
-                       for (int c = 0; c < S::kCount; ++c)
-                         for (int i = 0; i < 3; ++i) dv[i] += s.weight[c] * accel[i][s.node[c]];
-                       for (int i = 0; i < 3; ++i) ps.velocity[i][p] += dv[i] * dt;  // (2-15)
-                     });
-                   });
+  dispatch_stencil(
+      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
+      [&](auto width, auto mask) {
+        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+        parallel_for(ps.size(), [&](std::size_t p) {
+          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+          S s;
+          compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
+          double dv[3] = {0.0, 0.0, 0.0};
+          for (int c = 0; c < S::kCount; ++c)
+            for (int i = 0; i < 3; ++i) dv[i] += s.weight[c] * accel[i][s.node[c]];
+          for (int i = 0; i < 3; ++i) ps.velocity[i][p] += dv[i] * dt;  // (2-15)
+        });
+      });
 }
 
 void MpmSolver::remap_velocities() {
   const auto& ps = particles_;
   double* remapped[3] = {grid_.remapped[0].data(), grid_.remapped[1].data(),
                          grid_.remapped[2].data()};
-  dispatch_stencil(settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
-                   [&](auto width, auto mask) {
-                     using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-                     for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
-                       const double x[3] = {ps.position[0][p], ps.position[1][p],
-                                            ps.position[2][p]};
-                       S s;
-                       compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_,
-                                       grid_, s);
-                       const double m = ps.mass[p];
-                       for (int c = 0; c < S::kCount; ++c) {
-                         const double wm = s.weight[c] * m;
-                         for (int i = 0; i < 3; ++i)
-                           remapped[i][s.node[c]] += wm * ps.velocity[i][p];  // (2-17)
-                       }
-                     });
-                   });
+  dispatch_stencil(
+      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
+      [&](auto width, auto mask) {
+        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+        for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
+          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+          S s;
+          compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
+          const double m = ps.mass[p];
+          for (int c = 0; c < S::kCount; ++c) {
+            const double wm = s.weight[c] * m;
+            for (int i = 0; i < 3; ++i) remapped[i][s.node[c]] += wm * ps.velocity[i][p];  // (2-17)
+          }
+        });
+      });
   const double floor = mass_floor_;
   for_each_node(grid_.node_count(), [&](std::size_t n) {
     const double m = grid_.mass[n];
@@ -338,7 +331,7 @@ void MpmSolver::update_particles(double dt) {
           }
           StrainStep step;
           step.strain_increment = 0.5 * (l + l.transpose()) * dt;  // (2-18)
-          const Tensor3 spin = 0.5 * (l - l.transpose()) * dt;      // (2-19)
+          const Tensor3 spin = 0.5 * (l - l.transpose()) * dt;     // (2-19)
           const double volumetric = step.strain_increment.trace();
           if (!(1.0 + volumetric > 0.0)) return 1;
           step.dt = dt;
@@ -359,8 +352,9 @@ void MpmSolver::update_particles(double dt) {
         });
       });
   if (collapsed > 0)
-    throw Error("mpm: " + std::to_string(collapsed) + " particle(s) collapsed (1 + tr(d eps) <= 0) at t = " +
-                std::to_string(t1) + " s; lower time.cfl");
+    throw Error("mpm: " + std::to_string(collapsed) +
+                " particle(s) collapsed (1 + tr(d eps) <= 0) at t = " + std::to_string(t1) +
+                " s; lower time.cfl");
 }
 
 void MpmSolver::remove_outflow() {
@@ -405,8 +399,8 @@ void MpmSolver::compute_stable_dt() {
 #pragma omp parallel for schedule(static) reduction(max : fastest) if (count >= kMinParallelCount)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     const auto p = static_cast<std::size_t>(i);
-    const double v2 = ps.velocity[0][p] * ps.velocity[0][p] + ps.velocity[1][p] * ps.velocity[1][p] +
-                      ps.velocity[2][p] * ps.velocity[2][p];
+    const double v2 = ps.velocity[0][p] * ps.velocity[0][p] +
+                      ps.velocity[1][p] * ps.velocity[1][p] + ps.velocity[2][p] * ps.velocity[2][p];
     fastest = std::max(fastest, ps.sound_speed[p] + std::sqrt(v2));
   }
   stable_dt_ = fastest > 0.0 ? settings_.cfl * min_spacing_ / fastest

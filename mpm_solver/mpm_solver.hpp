@@ -50,10 +50,10 @@ struct MpmSettings {
 
 /// What the domain holds: mass, momentum, kinetic and internal energy.
 struct MpmTotals {
-  double mass = 0.0;                     ///< [kg]
-  std::array<double, 3> momentum{};      ///< [kg m/s]
-  double kinetic_energy = 0.0;           ///< [J]
-  double internal_energy = 0.0;          ///< sum m_p e_p [J]
+  double mass = 0.0;                 ///< [kg]
+  std::array<double, 3> momentum{};  ///< [kg m/s]
+  double kinetic_energy = 0.0;       ///< [J]
+  double internal_energy = 0.0;      ///< sum m_p e_p [J]
 };
 
 /// What crossed the domain's faces since the start (positive: out of the domain).

@@ -43,8 +43,8 @@ Source body_source(const config::Scene& scene, const config::Body& body) {
   if (!std::isfinite(e))
     throw Error("scene '" + scene.name + "': " + where + ": material '" + s.material +
                 "' cannot reach the given pressure at density " + std::to_string(s.density));
-  return {&body.shape, m, s.density, s.velocity, e, body.particles_per_axis, nullptr, 0.0,
-          body.name};
+  return {&body.shape, m,   s.density, s.velocity, e, body.particles_per_axis,
+          nullptr,     0.0, body.name};
 }
 
 Source charge_source(const config::Scene& scene, const config::Charge& charge) {
@@ -152,8 +152,9 @@ GeneratedParticles generate_particles(const config::Scene& scene, const grid::Un
                 }
               }
     if (ps.size() == first)
-      throw Error("scene '" + scene.name + "': " + (b < scene.bodies.size() ? "body '" : "charge '") +
-                  src.name + "' holds no MPM particle (outside the domain, or covered by later "
+      throw Error("scene '" + scene.name +
+                  "': " + (b < scene.bodies.size() ? "body '" : "charge '") + src.name +
+                  "' holds no MPM particle (outside the domain, or covered by later "
                   "bodies)");
   }
   return out;

@@ -20,11 +20,11 @@ namespace mpfd::mpm {
 /// What the step needs to know about a body or charge its particles came from.
 struct BodyInfo {
   std::string name;
-  std::size_t material = 0;         ///< index into Scene::materials
-  int particles_per_axis = 2;       ///< along each active axis
-  grid::Vec3 half_width{};          ///< GIMP particle half-width per axis [grid units]
+  std::size_t material = 0;          ///< index into Scene::materials
+  int particles_per_axis = 2;        ///< along each active axis
+  grid::Vec3 half_width{};           ///< GIMP particle half-width per axis [grid units]
   double characteristic_length = 0;  ///< h of the program burn T (3-2): particle spacing [m]
-  double burn_rate = 0.0;           ///< D / (1.5 h) [1/s]; 0 for inert bodies
+  double burn_rate = 0.0;            ///< D / (1.5 h) [1/s]; 0 for inert bodies
 };
 
 struct GeneratedParticles {

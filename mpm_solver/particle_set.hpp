@@ -20,10 +20,10 @@ namespace mpfd::mpm {
 enum StressComponent : std::size_t { kXX, kYY, kZZ, kXY, kYZ, kZX };
 
 struct ParticleSet {
-  std::array<std::vector<double>, 3> position;  ///< x_p [m]
-  std::array<std::vector<double>, 3> velocity;  ///< v_p [m/s]
-  std::vector<double> mass;                     ///< m_p [kg], constant
-  std::vector<double> density;                  ///< rho_p [kg/m^3]; volume = m_p / rho_p
+  std::array<std::vector<double>, 3> position;           ///< x_p [m]
+  std::array<std::vector<double>, 3> velocity;           ///< v_p [m/s]
+  std::vector<double> mass;                              ///< m_p [kg], constant
+  std::vector<double> density;                           ///< rho_p [kg/m^3]; volume = m_p / rho_p
   std::array<std::vector<double>, 6> deviatoric_stress;  ///< s [Pa], StressComponent order
   std::vector<double> pressure;                          ///< p [Pa] (times F for explosives)
   std::vector<double> bulk_viscosity;                    ///< q [Pa]
@@ -33,7 +33,7 @@ struct ParticleSet {
   std::vector<double> plastic_work;                      ///< [J/kg]
   std::vector<double> damage;                            ///< [-]
   std::vector<double> temperature;                       ///< [K]
-  std::vector<double> lighting_time;  ///< t_L of the program burn T (3-2) [s]; -inf: burnt/inert
+  std::vector<double> lighting_time;    ///< t_L of the program burn T (3-2) [s]; -inf: burnt/inert
   std::vector<std::uint16_t> material;  ///< index into Scene::materials
   std::vector<std::uint16_t> body;      ///< index into MpmSolver::bodies()
   std::vector<double> history;          ///< history_stride() scalars per particle
@@ -63,9 +63,9 @@ struct ParticleSet {
     fn(mass, 1);
     fn(density, 1);
     for (auto& a : deviatoric_stress) fn(a, 1);
-    for (auto* a : {&pressure, &bulk_viscosity, &specific_internal_energy, &sound_speed,
-                    &equivalent_plastic_strain, &plastic_work, &damage, &temperature,
-                    &lighting_time})
+    for (auto* a :
+         {&pressure, &bulk_viscosity, &specific_internal_energy, &sound_speed,
+          &equivalent_plastic_strain, &plastic_work, &damage, &temperature, &lighting_time})
       fn(*a, 1);
     fn(history, history_stride);
   }

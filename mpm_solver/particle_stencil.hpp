@@ -66,9 +66,8 @@ inline int first_node(double x, int axis, bool active, const StencilGeometry& g)
 
 /// Fills weights and gradients; with `grid` also the node indices.
 template <int Width, int Mask>
-inline void compute_stencil(const double x[3], const double half_width[3],
-                            const StencilGeometry& g, const SparseGrid& grid,
-                            Stencil<Width, Mask>& s) {
+inline void compute_stencil(const double x[3], const double half_width[3], const StencilGeometry& g,
+                            const SparseGrid& grid, Stencil<Width, Mask>& s) {
   using S = Stencil<Width, Mask>;
   AxisWeights<Width> ax[3];
   axis_weights<Width>(x[0], 0, (Mask & 1) != 0, g, half_width[0], ax[0]);
@@ -97,14 +96,22 @@ template <class Fn>
 void dispatch_stencil(bool gimp, int mask, Fn&& fn) {
   const auto with_mask = [&](auto width) {
     switch (mask) {
-      case 1: return fn(width, std::integral_constant<int, 1>{});
-      case 2: return fn(width, std::integral_constant<int, 2>{});
-      case 3: return fn(width, std::integral_constant<int, 3>{});
-      case 4: return fn(width, std::integral_constant<int, 4>{});
-      case 5: return fn(width, std::integral_constant<int, 5>{});
-      case 6: return fn(width, std::integral_constant<int, 6>{});
-      case 7: return fn(width, std::integral_constant<int, 7>{});
-      default: throw Error("mpm: a grid needs at least one axis with more than one cell");
+      case 1:
+        return fn(width, std::integral_constant<int, 1>{});
+      case 2:
+        return fn(width, std::integral_constant<int, 2>{});
+      case 3:
+        return fn(width, std::integral_constant<int, 3>{});
+      case 4:
+        return fn(width, std::integral_constant<int, 4>{});
+      case 5:
+        return fn(width, std::integral_constant<int, 5>{});
+      case 6:
+        return fn(width, std::integral_constant<int, 6>{});
+      case 7:
+        return fn(width, std::integral_constant<int, 7>{});
+      default:
+        throw Error("mpm: a grid needs at least one axis with more than one cell");
     }
   };
   if (gimp)

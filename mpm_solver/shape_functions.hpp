@@ -14,8 +14,8 @@ namespace mpfd::mpm {
 /// Weights and derivatives of the nodes first, first + 1, ... along one axis.
 template <int Width>
 struct AxisWeights {
-  int first = 0;               ///< grid index of the first node (may be -1 for GIMP)
-  double weight[Width] = {};   ///< N or S [-]
+  int first = 0;                ///< grid index of the first node (may be -1 for GIMP)
+  double weight[Width] = {};    ///< N or S [-]
   double gradient[Width] = {};  ///< dN/dx [1/m]
 };
 

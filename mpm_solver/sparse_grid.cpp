@@ -66,8 +66,8 @@ grid::Index3 SparseGrid::node_coordinates(std::size_t n) const {
   const int bi = static_cast<int>(id % static_cast<std::size_t>(blocks_[0]));
   const int bj = static_cast<int>((id / static_cast<std::size_t>(blocks_[0])) %
                                   static_cast<std::size_t>(blocks_[1]));
-  const int bk = static_cast<int>(id / (static_cast<std::size_t>(blocks_[0]) *
-                                        static_cast<std::size_t>(blocks_[1])));
+  const int bk = static_cast<int>(
+      id / (static_cast<std::size_t>(blocks_[0]) * static_cast<std::size_t>(blocks_[1])));
   const int li = local % block_dim_[0];
   const int lj = (local / block_dim_[0]) % block_dim_[1];
   const int lk = local / (block_dim_[0] * block_dim_[1]);
@@ -95,12 +95,15 @@ void SparseGrid::bin_particles(std::span<const std::int32_t> home_slot) {
   const auto colour_of = [&](std::size_t slot) {
     const auto id = static_cast<std::size_t>(active_[slot]);
     const auto bx = id % static_cast<std::size_t>(blocks_[0]);
-    const auto by = (id / static_cast<std::size_t>(blocks_[0])) % static_cast<std::size_t>(blocks_[1]);
-    const auto bz = id / (static_cast<std::size_t>(blocks_[0]) * static_cast<std::size_t>(blocks_[1]));
+    const auto by =
+        (id / static_cast<std::size_t>(blocks_[0])) % static_cast<std::size_t>(blocks_[1]);
+    const auto bz =
+        id / (static_cast<std::size_t>(blocks_[0]) * static_cast<std::size_t>(blocks_[1]));
     return static_cast<int>((bx & 1U) | ((by & 1U) << 1U) | ((bz & 1U) << 2U));
   };
   for (std::size_t s = 0; s < slots; ++s)
-    if (bucket_begin_[s + 1] > bucket_begin_[s]) ++count[static_cast<std::size_t>(colour_of(s)) + 1];
+    if (bucket_begin_[s + 1] > bucket_begin_[s])
+      ++count[static_cast<std::size_t>(colour_of(s)) + 1];
   for (int c = 0; c < kColours; ++c) count[c + 1] += count[c];
   colour_begin_ = count;
   for (std::size_t s = 0; s < slots; ++s)

@@ -50,8 +50,8 @@ class SparseGrid {
   [[nodiscard]] std::size_t node(int i, int j, int k) const {
     const std::int32_t slot = table_[block_id(i >> shift_[0], j >> shift_[1], k >> shift_[2])];
     return static_cast<std::size_t>(slot) * block_nodes_ +
-           static_cast<std::size_t>((i & mask_[0]) +
-                                    block_dim_[0] * ((j & mask_[1]) + block_dim_[1] * (k & mask_[2])));
+           static_cast<std::size_t>(
+               (i & mask_[0]) + block_dim_[0] * ((j & mask_[1]) + block_dim_[1] * (k & mask_[2])));
   }
   /// Storage coordinates of node `n` of the arrays (for boundaries and output).
   [[nodiscard]] grid::Index3 node_coordinates(std::size_t n) const;

@@ -83,8 +83,8 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     if (ps.size() == 0) return;
     for (std::size_t g = 0; g < points.size(); ++g) {
       const std::size_t p = nearest_particle(ps, points[g].position);
-      const double values[5] = {ps.density[p], ps.pressure[p], ps.velocity[0][p],
-                                ps.velocity[1][p], ps.velocity[2][p]};
+      const double values[5] = {ps.density[p], ps.pressure[p], ps.velocity[0][p], ps.velocity[1][p],
+                                ps.velocity[2][p]};
       std::copy(values, values + 5, sample.begin() + static_cast<std::ptrdiff_t>(5 * g));
     }
     gauges.record(solver.time(), sample);
@@ -103,7 +103,8 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
         {"energy", "J", initial_energy, now.kinetic_energy + now.internal_energy, ledger.energy}};
     const char* axis[3] = {"momentum_x", "momentum_y", "momentum_z"};
     for (int a = 0; a < 3; ++a)
-      audit.push_back({axis[a], "kg m/s", initial.momentum[a], now.momentum[a], ledger.momentum[a]});
+      audit.push_back(
+          {axis[a], "kg m/s", initial.momentum[a], now.momentum[a], ledger.momentum[a]});
     summary.set_conservation(audit, momentum_scale);
     summary.set_detail("audit_scale",
                        {{"value", momentum_scale},
@@ -121,10 +122,9 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_detail("particles", solver.particles().size());
     summary.set_detail("particles_removed", ledger.particles_removed);
     summary.set_detail("grid_nodes_allocated", solver.sparse_grid().node_count());
-    summary.set_detail("shape_function", solver.settings().shape_function ==
-                                                 config::ShapeFunction::gimp
-                                             ? "gimp"
-                                             : "linear");
+    summary.set_detail(
+        "shape_function",
+        solver.settings().shape_function == config::ShapeFunction::gimp ? "gimp" : "linear");
     summary.set_detail("update",
                        solver.settings().update == config::MpmUpdate::musl ? "musl" : "usl");
     summary.set_detail("peak_memory_bytes", peak_memory_bytes());

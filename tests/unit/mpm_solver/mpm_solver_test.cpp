@@ -10,8 +10,8 @@
 namespace mpfd::mpm {
 namespace {
 
-using config::ShapeFunction;
 using config::MpmUpdate;
+using config::ShapeFunction;
 
 MpmSettings settings(ShapeFunction shape, MpmUpdate update = MpmUpdate::musl) {
   MpmSettings s;
@@ -27,8 +27,7 @@ double max_speed(const ParticleSet& ps) {
   return v;
 }
 
-class ShapeAndUpdate
-    : public ::testing::TestWithParam<std::tuple<ShapeFunction, MpmUpdate>> {};
+class ShapeAndUpdate : public ::testing::TestWithParam<std::tuple<ShapeFunction, MpmUpdate>> {};
 
 // Uniform gas at rest in a closed 2D box: the internal forces cancel at every
 // interior node and the walls hold the rest, so nothing may move.
@@ -78,7 +77,8 @@ INSTANTIATE_TEST_SUITE_P(Mpm, ShapeAndUpdate,
 TEST(MpmSolver, WallImpulseIsAccountedInTheLedger) {
   const auto scene = testing::gas_scene(
       "[1, 0.1, 0.1]", "[50, 1, 1]",
-      "bodies:\n" + testing::gas_body("gas", "[0, 0, 0]", "[0.6, 0.1, 0.1]", 1.0, 1.0e5, "[-200, 0, 0]") +
+      "bodies:\n" +
+          testing::gas_body("gas", "[0, 0, 0]", "[0.6, 0.1, 0.1]", 1.0, 1.0e5, "[-200, 0, 0]") +
           "boundaries: {x_lower: wall}\n");
   MpmSolver solver(scene, settings(ShapeFunction::linear));
   const MpmTotals before = solver.totals();
@@ -91,9 +91,10 @@ TEST(MpmSolver, WallImpulseIsAccountedInTheLedger) {
 
 // A slab moving out through an open face: what leaves is in the ledger.
 TEST(MpmSolver, OutflowRemovesParticlesAndBooksTheirMassMomentumAndEnergy) {
-  const auto scene = testing::gas_scene(
-      "[1, 0.1, 0.1]", "[50, 1, 1]",
-      "bodies:\n" + testing::gas_body("gas", "[0.5, 0, 0]", "[1, 0.1, 0.1]", 1.0, 1.0e3, "[500, 0, 0]"));
+  const auto scene =
+      testing::gas_scene("[1, 0.1, 0.1]", "[50, 1, 1]",
+                         "bodies:\n" + testing::gas_body("gas", "[0.5, 0, 0]", "[1, 0.1, 0.1]", 1.0,
+                                                         1.0e3, "[500, 0, 0]"));
   MpmSolver solver(scene, settings(ShapeFunction::gimp));
   const MpmTotals before = solver.totals();
   solver.advance_to(4.0e-4);

@@ -13,9 +13,10 @@ namespace {
 
 TEST(ParticleGeneration, FillsBodiesWithNPerAxisAndExactMass) {
   // 2D, 10 x 4 cells of 0.1 m; a body over the left half, 3 particles per axis.
-  const auto scene = testing::gas_scene(
-      "[1, 0.4, 0.1]", "[10, 4, 1]",
-      "bodies:\n" + testing::gas_body("left", "[0, 0, 0]", "[0.5, 0.4, 0.1]", 2.0, 1.0, "[3, 0, 0]", 3));
+  const auto scene =
+      testing::gas_scene("[1, 0.4, 0.1]", "[10, 4, 1]",
+                         "bodies:\n" + testing::gas_body("left", "[0, 0, 0]", "[0.5, 0.4, 0.1]",
+                                                         2.0, 1.0, "[3, 0, 0]", 3));
   const auto generated = generate_particles(scene, initial::scene_grid(scene));
   const auto& ps = generated.particles;
   ASSERT_EQ(ps.size(), 5u * 4u * 9u);

@@ -17,8 +17,8 @@ struct Box {
 TEST(SparseGrid, OnlyTouchedBlocksExistAndNodesAreDistinct) {
   SparseGrid g(grid::UniformGrid::from_bounds({0, 0, 0}, {1, 1, 1}, {40, 40, 40}));
   g.clear();
-  g.activate({5, 5, 5}, {6, 6, 6});    // one block
-  g.activate({7, 7, 7}, {9, 9, 9});    // crosses into 7 more blocks (4..7 | 8..11 per axis)
+  g.activate({5, 5, 5}, {6, 6, 6});  // one block
+  g.activate({7, 7, 7}, {9, 9, 9});  // crosses into 7 more blocks (4..7 | 8..11 per axis)
   g.allocate_nodes();
   EXPECT_EQ(g.block_count(), 8u);
   EXPECT_EQ(g.block_nodes(), 64u);
