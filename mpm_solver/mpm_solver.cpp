@@ -120,8 +120,7 @@ void MpmSolver::advance(double dt) {
   particles_to_grid();
   integrate_nodes(dt);
   if (settings_.update == config::MpmUpdate::musl) {
-    update_velocities(dt);
-    remap_velocities();
+    update_and_remap_velocities(dt);
   }
   update_particles(dt);
   particle_updates_ += static_cast<double>(particles_.size());
@@ -248,29 +247,13 @@ void MpmSolver::apply_face_conditions(std::array<std::vector<double>, 3>& field,
   }
 }
 
-void MpmSolver::update_velocities(double dt) {
+void MpmSolver::update_and_remap_velocities(double dt) {
   auto& ps = particles_;
   const auto& accel = grid_.force;
-  dispatch_stencil(
-      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
-      [&](auto width, auto mask) {
-        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-        parallel_for(ps.size(), [&](std::size_t p) {
-          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
-          S s;
-          compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
-          double dv[3] = {0.0, 0.0, 0.0};
-          for (int c = 0; c < S::kCount; ++c)
-            for (int i = 0; i < 3; ++i) dv[i] += s.weight[c] * accel[i][s.node[c]];
-          for (int i = 0; i < 3; ++i) ps.velocity[i][p] += dv[i] * dt;  // (2-15)
-        });
-      });
-}
-
-void MpmSolver::remap_velocities() {
-  const auto& ps = particles_;
   double* remapped[3] = {grid_.remapped[0].data(), grid_.remapped[1].data(),
                          grid_.remapped[2].data()};
+  // One pass: a particle's v^{n+1} needs only the nodal accelerations (read)
+  // and its remap writes only the remapped momenta, so the two share a stencil.
   dispatch_stencil(
       settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
       [&](auto width, auto mask) {
@@ -279,10 +262,17 @@ void MpmSolver::remap_velocities() {
           const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
           S s;
           compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
+          double v[3] = {0.0, 0.0, 0.0};
+          for (int c = 0; c < S::kCount; ++c)
+            for (int i = 0; i < 3; ++i) v[i] += s.weight[c] * accel[i][s.node[c]];
+          for (int i = 0; i < 3; ++i) {
+            v[i] = ps.velocity[i][p] + v[i] * dt;  // (2-15)
+            ps.velocity[i][p] = v[i];
+          }
           const double m = ps.mass[p];
           for (int c = 0; c < S::kCount; ++c) {
             const double wm = s.weight[c] * m;
-            for (int i = 0; i < 3; ++i) remapped[i][s.node[c]] += wm * ps.velocity[i][p];  // (2-17)
+            for (int i = 0; i < 3; ++i) remapped[i][s.node[c]] += wm * v[i];  // (2-17)
           }
         });
       });

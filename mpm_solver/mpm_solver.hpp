@@ -10,8 +10,10 @@
 //                             f_I before (2-13); shear-mode damping (2-33)-(2-48) and
 //                             the contact correction act on f_I, p_I^{n+1} after it,
 //                             over the cells' 8 nodes, before step 4 reads them]
-//   4. update_velocities()    v_p += sum f_I / m_I N_Ip dt (2-15)
-//   5. remap_velocities()     MUSL: p_I <- sum m_p N_Ip v_p^{n+1} (2-17), face conditions
+//   4. update_and_remap_velocities()
+//                             v_p += sum f_I / m_I N_Ip dt (2-15), and in the same
+//                             particle pass (MUSL) the remap sum m_p N_Ip v_p^{n+1} (2-17);
+//   5.                        then / m_I and the face conditions
 //   6. update_particles()     x_p += sum p_I^{n+1} / m_I N_Ip dt (2-16); strain and spin
 //                             increments (2-18), (2-19) from the step-5 (MUSL) or
 //                             step-3 (USL) nodal velocities; density (2-20); bulk
@@ -19,7 +21,7 @@
 //                             model (2-21) with the program burn (3-1), (3-2)
 //   7. remove_outflow()       particles that left through an outflow face
 //
-// USL skips step 5 and folds step 4 into step 6. All weights are N^n (the
+// USL skips steps 4 and 5 and does (2-15) in step 6. All weights are N^n (the
 // particles' positions at the start of the step). Nothing is allocated inside a
 // step once the grid's arrays have reached their largest size.
 
@@ -101,8 +103,7 @@ class MpmSolver {
   void rebuild_grid();
   void particles_to_grid();
   void integrate_nodes(double dt);
-  void update_velocities(double dt);
-  void remap_velocities();
+  void update_and_remap_velocities(double dt);
   void update_particles(double dt);
   void remove_outflow();
   /// Zeroes the constrained components of `field` at nodes on fixed and

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 
 #include "common/core/error.hpp"
@@ -59,35 +60,66 @@ template <int Width>
 inline int first_node(double x, int axis, bool active, const StencilGeometry& g) {
   if (!active) return 0;
   const double xi = (x - g.origin[axis]) * g.inverse_spacing[axis];
-  const double base = std::floor(xi);
-  const int shift = Width == 3 && xi - base < 0.5 ? 1 : 0;  // as gimp_weights()
-  return static_cast<int>(base) - shift + g.offset[axis];
+  if constexpr (Width == 3)  // as gimp_weights(): around the nearest node
+    return static_cast<int>(std::floor(xi + 0.5)) - 1 + g.offset[axis];
+  else
+    return static_cast<int>(std::floor(xi)) + g.offset[axis];
 }
 
-/// Fills weights and gradients; with `grid` also the node indices.
+/// Fills node indices, weights and gradients. Always inlined: a kernel that
+/// reads only the weights lets the compiler drop the gradients.
 template <int Width, int Mask>
-inline void compute_stencil(const double x[3], const double half_width[3], const StencilGeometry& g,
-                            const SparseGrid& grid, Stencil<Width, Mask>& s) {
+[[gnu::always_inline]] inline void compute_stencil(const double x[3], const double half_width[3],
+                                                   const StencilGeometry& g, const SparseGrid& grid,
+                                                   Stencil<Width, Mask>& s) {
   using S = Stencil<Width, Mask>;
   AxisWeights<Width> ax[3];
   axis_weights<Width>(x[0], 0, (Mask & 1) != 0, g, half_width[0], ax[0]);
   axis_weights<Width>(x[1], 1, (Mask & 2) != 0, g, half_width[1], ax[1]);
   axis_weights<Width>(x[2], 2, (Mask & 4) != 0, g, half_width[2], ax[2]);
   for (int a = 0; a < 3; ++a) s.first[a] = ax[a].first + g.offset[a];
+  // The stencil spans at most two blocks per axis: look their slots up once.
+  constexpr int kShift = SparseGrid::kBlockShift;
+  constexpr int kMask[3] = {(Mask & 1) ? (1 << kShift) - 1 : 0, (Mask & 2) ? (1 << kShift) - 1 : 0,
+                            (Mask & 4) ? (1 << kShift) - 1 : 0};
+  constexpr int kDimX = kMask[0] + 1, kDimY = kMask[1] + 1;
+  constexpr int kShiftOf[3] = {(Mask & 1) ? kShift : 0, (Mask & 2) ? kShift : 0,
+                               (Mask & 4) ? kShift : 0};
+  int block[3], local[3], span[3];
+  for (int a = 0; a < 3; ++a) {
+    block[a] = s.first[a] >> kShiftOf[a];
+    local[a] = s.first[a] & kMask[a];
+    const int width = (Mask >> a) & 1 ? Width : 1;
+    span[a] = local[a] + width - 1 > kMask[a] ? 2 : 1;
+  }
+  std::int32_t slots[2][2][2] = {};
+  for (int dk = 0; dk < span[2]; ++dk)
+    for (int dj = 0; dj < span[1]; ++dj)
+      for (int di = 0; di < span[0]; ++di)
+        slots[dk][dj][di] = grid.slot(block[0] + di, block[1] + dj, block[2] + dk);
+  const auto block_nodes = static_cast<std::size_t>(grid.block_nodes());
   int c = 0;
-  for (int k = 0; k < S::kNz; ++k)
+  for (int k = 0; k < S::kNz; ++k) {
+    const int lz = local[2] + k;
+    const int bz = lz >> kShiftOf[2];
     for (int j = 0; j < S::kNy; ++j) {
+      const int ly = local[1] + j;
+      const int by = ly >> kShiftOf[1];
       const double wyz = ax[1].weight[j] * ax[2].weight[k];
       const double gy = ax[1].gradient[j] * ax[2].weight[k];
       const double gz = ax[1].weight[j] * ax[2].gradient[k];
+      const int offset_yz = kDimX * ((ly & kMask[1]) + kDimY * (lz & kMask[2]));
       for (int i = 0; i < S::kNx; ++i, ++c) {
-        s.node[c] = grid.node(s.first[0] + i, s.first[1] + j, s.first[2] + k);
+        const int lx = local[0] + i;
+        s.node[c] = static_cast<std::size_t>(slots[bz][by][lx >> kShiftOf[0]]) * block_nodes +
+                    static_cast<std::size_t>((lx & kMask[0]) + offset_yz);
         s.weight[c] = ax[0].weight[i] * wyz;
         s.gradient[c][0] = ax[0].gradient[i] * wyz;
         s.gradient[c][1] = ax[0].weight[i] * gy;
         s.gradient[c][2] = ax[0].weight[i] * gz;
       }
     }
+  }
 }
 
 /// Calls fn(std::integral_constant<int, Width>, std::integral_constant<int, Mask>)

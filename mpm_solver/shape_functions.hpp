@@ -7,6 +7,7 @@
 // xi = n. An axis that is not active has one node layer with weight 1 and no
 // gradient (a 1D or 2D run is the same code).
 
+#include <algorithm>
 #include <cmath>
 
 namespace mpfd::mpm {
@@ -55,17 +56,29 @@ inline double gimp_weight(double r, double a, double& slope) {
 }
 
 /// uGIMP along one axis. With a <= 1/2 at most three nodes have a nonzero
-/// weight: base - 1 .. base + 1 when xi lies in the lower half of its cell,
-/// base .. base + 2 otherwise.
+/// weight: those around the node nearest to xi, at signed distance u in
+/// [-1/2, 1/2) from it. gimp_weight() of r = u + 1, u, u - 1 reduces to the
+/// forms below, written without branches (selects) because particles
+/// scatter over every case and branches would mispredict.
 inline void gimp_weights(double xi, double half_width, double inverse_spacing,
                          AxisWeights<3>& out) {
-  const double base = std::floor(xi);
-  out.first = static_cast<int>(base) - (xi - base < 0.5 ? 1 : 0);
-  for (int k = 0; k < 3; ++k) {
-    double slope = 0.0;
-    out.weight[k] = gimp_weight(xi - (out.first + k), half_width, slope);
-    out.gradient[k] = slope * inverse_spacing;  // S_I,j of W (2-58): dS/dr, r = x_p - x_I
-  }
+  const double a = half_width;
+  const double nearest = std::floor(xi + 0.5);
+  const double u = xi - nearest;
+  out.first = static_cast<int>(nearest) - 1;
+  const double inverse_4a = 0.25 / a;
+  // Node below (r = u + 1 >= 1/2): 1 - r when r < 1 - a, else (1 + a - r)^2 / (4a).
+  const double below = std::max(a - u, 0.0);
+  out.weight[0] = u < -a ? -u : below * below * inverse_4a;
+  out.gradient[0] = (u < -a ? -1.0 : -2.0 * below * inverse_4a) * inverse_spacing;
+  // The nearest node (|r| = |u| <= 1/2 <= 1 - a).
+  const bool inside = std::abs(u) < a;
+  out.weight[1] = inside ? 1.0 - (u * u + a * a) * 2.0 * inverse_4a : 1.0 - std::abs(u);
+  out.gradient[1] = (inside ? -u * 4.0 * inverse_4a : (u < 0.0 ? 1.0 : -1.0)) * inverse_spacing;
+  // Node above (r = u - 1 <= -1/2), the mirror image.
+  const double above = std::max(a + u, 0.0);
+  out.weight[2] = u > a ? u : above * above * inverse_4a;
+  out.gradient[2] = (u > a ? 1.0 : 2.0 * above * inverse_4a) * inverse_spacing;
 }
 
 }  // namespace mpfd::mpm

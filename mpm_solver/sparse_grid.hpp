@@ -53,6 +53,10 @@ class SparseGrid {
            static_cast<std::size_t>(
                (i & mask_[0]) + block_dim_[0] * ((j & mask_[1]) + block_dim_[1] * (k & mask_[2])));
   }
+  /// Slot of the active block with block coordinates (bi, bj, bk).
+  [[nodiscard]] std::int32_t slot(int bi, int bj, int bk) const {
+    return table_[block_id(bi, bj, bk)];
+  }
   /// Storage coordinates of node `n` of the arrays (for boundaries and output).
   [[nodiscard]] grid::Index3 node_coordinates(std::size_t n) const;
 
