@@ -87,10 +87,6 @@ MpmSolver::MpmSolver(const config::Scene& scene, MpmSettings settings)
     particles_.pressure[p] *= burn_fraction(p);  // T (3-1)
     particles_.set_deviator(p, s);
   }
-  // Only massless nodes are skipped: a light node's f / m is large but its
-  // weight N_Ip is as small, so N f / m stays bounded, and dropping light
-  // nodes would break the momentum balance (measured: 1e-10 relative with GIMP).
-  mass_floor_ = 0.0;
   home_slot_.reserve(particles_.size());
   leaving_.reserve(particles_.size());
   compute_stable_dt();
@@ -197,12 +193,14 @@ void MpmSolver::integrate_nodes(double dt) {
     for (int a = 0; a < 3; ++a) momentum[a][n] += force[a][n] * dt;  // (2-13)
   });
   apply_face_conditions(momentum, &force, dt);
-  // From here on the arrays hold velocities and accelerations: p / m and f / m,
-  // zero at nodes lighter than the floor, so the particle passes only multiply.
-  const double floor = mass_floor_;
+  // From here on the arrays hold velocities and accelerations, p / m and f / m,
+  // so the particle passes only multiply. Only massless nodes are skipped: a
+  // light node's f / m is large but its weight N_Ip is as small, so N f / m
+  // stays bounded, and a relative cut-off (tried: 1e-10 of the lightest
+  // particle) broke the momentum balance by 1e-10 with GIMP.
   for_each_node(nodes, [&](std::size_t n) {
     const double m = grid_.mass[n];
-    const double inverse = m > floor ? 1.0 / m : 0.0;
+    const double inverse = m > 0.0 ? 1.0 / m : 0.0;
     for (int a = 0; a < 3; ++a) {
       momentum[a][n] *= inverse;
       force[a][n] *= inverse;
@@ -276,10 +274,9 @@ void MpmSolver::update_and_remap_velocities(double dt) {
           }
         });
       });
-  const double floor = mass_floor_;
   for_each_node(grid_.node_count(), [&](std::size_t n) {
     const double m = grid_.mass[n];
-    const double inverse = m > floor ? 1.0 / m : 0.0;
+    const double inverse = m > 0.0 ? 1.0 / m : 0.0;
     for (int a = 0; a < 3; ++a) remapped[a][n] *= inverse;
   });
   apply_face_conditions(grid_.remapped, nullptr, 0.0);

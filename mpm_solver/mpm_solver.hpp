@@ -124,7 +124,6 @@ class MpmSolver {
   std::vector<std::unique_ptr<ConstitutiveModel>> models_;  // by material index; null if unused
   std::vector<std::int32_t> home_slot_;                     // scratch, per particle
   std::vector<std::uint8_t> leaving_;                       // scratch, per particle
-  double mass_floor_ = 0.0;  // nodes this light or lighter carry no velocity
   double stable_dt_ = 0.0;
   double time_ = 0.0;
   std::int64_t steps_ = 0;

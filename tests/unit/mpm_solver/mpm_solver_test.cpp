@@ -108,6 +108,26 @@ TEST(MpmSolver, OutflowRemovesParticlesAndBooksTheirMassMomentumAndEnergy) {
   EXPECT_NEAR(after.kinetic_energy + after.internal_energy + ledger.energy, e0, 2e-3 * e0);
 }
 
+// The grid is rebuilt every step into arrays that keep their size: once the
+// particles cover the same blocks, no step reallocates them.
+TEST(MpmSolver, GridArraysAreNotReallocatedAfterWarmUp) {
+  const auto scene = testing::gas_scene(
+      "[1, 1, 1]", "[12, 12, 12]",
+      "bodies:\n" + testing::gas_body("air", "[0, 0, 0]", "[1, 1, 1]", 1.2, 1.0e5) +
+          "boundaries: {x_lower: wall, x_upper: wall, y_lower: wall, y_upper: wall, "
+          "z_lower: wall, z_upper: wall}\n");
+  MpmSolver solver(scene, settings(ShapeFunction::gimp));
+  solver.advance(solver.stable_dt());
+  const double* mass = solver.sparse_grid().mass.data();
+  const double* remapped = solver.sparse_grid().remapped[2].data();
+  const std::size_t nodes = solver.sparse_grid().node_count();
+  for (int i = 0; i < 20; ++i) solver.advance(solver.stable_dt());
+  EXPECT_EQ(solver.sparse_grid().mass.data(), mass);
+  EXPECT_EQ(solver.sparse_grid().remapped[2].data(), remapped);
+  EXPECT_EQ(solver.sparse_grid().node_count(), nodes);
+  EXPECT_EQ(nodes, 4u * 4u * 4u * 64u);  // 15 storage nodes per axis -> 4 blocks of 4
+}
+
 // Scatters run in parallel by block colour with a fixed order inside each
 // block, so the result does not depend on the number of threads.
 TEST(MpmSolver, ResultIsBitwiseIndependentOfThreadCount) {
