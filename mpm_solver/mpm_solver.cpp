@@ -132,7 +132,7 @@ void MpmSolver::rebuild_grid() {
   grid_.clear();
   const auto& g = grid_.grid();
   const bool active[3] = {g.is_active(0), g.is_active(1), g.is_active(2)};
-  const int width = settings_.shape_function == config::ShapeFunction::gimp ? 3 : 2;
+  const int width = settings_.shape_function != config::ShapeFunction::linear ? 3 : 2;
   for (std::size_t p = 0; p < n; ++p) {
     grid::Index3 lo{}, hi{};
     for (int a = 0; a < 3; ++a) {
@@ -147,6 +147,17 @@ void MpmSolver::rebuild_grid() {
   grid_.bin_particles(home_slot_);
 }
 
+void MpmSolver::particle_half_width(std::size_t p, double half_width[3]) const {
+  const BodyInfo& body = bodies_[particles_.body[p]];
+  for (int a = 0; a < 3; ++a) {
+    half_width[a] = body.half_width[a];
+    // cpGIMP (W §2.3): the domain follows F_aa; at most half a cell, so that
+    // three nodes per axis still hold the stencil, and not degenerate.
+    if (settings_.shape_function == config::ShapeFunction::cpgimp && grid_.grid().is_active(a))
+      half_width[a] = std::clamp(half_width[a] * particles_.stretch[a][p], 1e-3, 0.5);
+  }
+}
+
 void MpmSolver::particles_to_grid() {
   const auto& ps = particles_;
   double* node_mass = grid_.mass.data();
@@ -154,13 +165,15 @@ void MpmSolver::particles_to_grid() {
                               grid_.momentum[2].data()};
   double* node_force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
   dispatch_stencil(
-      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
+      settings_.shape_function != config::ShapeFunction::linear, axis_mask_,
       [&](auto width, auto mask) {
         using S = Stencil<decltype(width)::value, decltype(mask)::value>;
         for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
           const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
           S s;
-          compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
+          double half_width[3];
+          particle_half_width(p, half_width);
+          compute_stencil(x, half_width, geometry_, grid_, s);
           const double m = ps.mass[p];
           const double volume = m / ps.density[p];
           const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
@@ -253,13 +266,15 @@ void MpmSolver::update_and_remap_velocities(double dt) {
   // One pass: a particle's v^{n+1} needs only the nodal accelerations (read)
   // and its remap writes only the remapped momenta, so the two share a stencil.
   dispatch_stencil(
-      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
+      settings_.shape_function != config::ShapeFunction::linear, axis_mask_,
       [&](auto width, auto mask) {
         using S = Stencil<decltype(width)::value, decltype(mask)::value>;
         for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
           const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
           S s;
-          compute_stencil(x, bodies_[ps.body[p]].half_width.data(), geometry_, grid_, s);
+          double half_width[3];
+          particle_half_width(p, half_width);
+          compute_stencil(x, half_width, geometry_, grid_, s);
           double v[3] = {0.0, 0.0, 0.0};
           for (int c = 0; c < S::kCount; ++c)
             for (int i = 0; i < 3; ++i) v[i] += s.weight[c] * accel[i][s.node[c]];
@@ -293,14 +308,16 @@ void MpmSolver::update_particles(double dt) {
   const double t1 = time_ + dt;
   std::size_t collapsed = 0;
   dispatch_stencil(
-      settings_.shape_function == config::ShapeFunction::gimp, axis_mask_,
+      settings_.shape_function != config::ShapeFunction::linear, axis_mask_,
       [&](auto width, auto mask) {
         using S = Stencil<decltype(width)::value, decltype(mask)::value>;
         collapsed = parallel_sum(ps.size(), [&](std::size_t p) -> std::size_t {
           const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
           S s;
           const BodyInfo& body = bodies_[ps.body[p]];
-          compute_stencil(x, body.half_width.data(), geometry_, grid_, s);
+          double half_width[3];
+          particle_half_width(p, half_width);
+          compute_stencil(x, half_width, geometry_, grid_, s);
           double dx[3] = {0.0, 0.0, 0.0};
           double dv[3] = {0.0, 0.0, 0.0};
           Tensor3 l = Tensor3::Zero();  // velocity gradient sum_I v_iI N_I,j
@@ -321,6 +338,8 @@ void MpmSolver::update_particles(double dt) {
           const Tensor3 spin = 0.5 * (l - l.transpose()) * dt;     // (2-19)
           const double volumetric = step.strain_increment.trace();
           if (!(1.0 + volumetric > 0.0)) return 1;
+          for (int i = 0; i < 3; ++i)  // F_ii, the cpGIMP domain stretch
+            ps.stretch[i][p] *= 1.0 + step.strain_increment(i, i);
           step.dt = dt;
           step.density_old = ps.density[p];
           step.density_new = ps.density[p] / (1.0 + volumetric);  // (2-20)

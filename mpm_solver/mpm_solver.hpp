@@ -50,6 +50,19 @@ struct MpmSettings {
   static MpmSettings from_scene(const config::Scene& scene);
 };
 
+/// The scene-file name of a shape function: "linear", "gimp", "cpgimp".
+[[nodiscard]] inline const char* shape_function_name(config::ShapeFunction f) {
+  switch (f) {
+    case config::ShapeFunction::gimp:
+      return "gimp";
+    case config::ShapeFunction::cpgimp:
+      return "cpgimp";
+    case config::ShapeFunction::linear:
+      break;
+  }
+  return "linear";
+}
+
 /// What the domain holds: mass, momentum, kinetic and internal energy.
 struct MpmTotals {
   double mass = 0.0;                 ///< [kg]
@@ -101,6 +114,8 @@ class MpmSolver {
 
  private:
   void rebuild_grid();
+  /// GIMP half-widths of particle p per axis [grid units]: its body's, times F_aa for cpGIMP.
+  void particle_half_width(std::size_t p, double half_width[3]) const;
   void particles_to_grid();
   void integrate_nodes(double dt);
   void update_and_remap_velocities(double dt);

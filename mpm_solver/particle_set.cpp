@@ -23,8 +23,10 @@ void compact(std::vector<T>& values, std::span<const std::uint8_t> flags, std::s
 void ParticleSet::grow(std::size_t count) {
   const std::size_t n = size() + count;
   for_each_double_array([&](std::vector<double>& a, std::size_t stride) { a.resize(n * stride); });
-  for (std::size_t p = n - count; p < n; ++p)
+  for (std::size_t p = n - count; p < n; ++p) {
     lighting_time[p] = -std::numeric_limits<double>::infinity();
+    for (auto& f : stretch) f[p] = 1.0;
+  }
   material.resize(n);
   body.resize(n);
 }

@@ -33,7 +33,10 @@ struct ParticleSet {
   std::vector<double> plastic_work;                      ///< [J/kg]
   std::vector<double> damage;                            ///< [-]
   std::vector<double> temperature;                       ///< [K]
-  std::vector<double> lighting_time;    ///< t_L of the program burn T (3-2) [s]; -inf: burnt/inert
+  std::vector<double> lighting_time;  ///< t_L of the program burn T (3-2) [s]; -inf: burnt/inert
+  /// F_aa, the diagonal of the deformation gradient, updated by (1 + d eps_aa) each
+  /// step (cpGIMP's domain stretch) [-]
+  std::array<std::vector<double>, 3> stretch;
   std::vector<std::uint16_t> material;  ///< index into Scene::materials
   std::vector<std::uint16_t> body;      ///< index into MpmSolver::bodies()
   std::vector<double> history;          ///< history_stride() scalars per particle
@@ -67,6 +70,7 @@ struct ParticleSet {
          {&pressure, &bulk_viscosity, &specific_internal_energy, &sound_speed,
           &equivalent_plastic_strain, &plastic_work, &damage, &temperature, &lighting_time})
       fn(*a, 1);
+    for (auto& a : stretch) fn(a, 1);
     fn(history, history_stride);
   }
 };

@@ -122,9 +122,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_detail("particles", solver.particles().size());
     summary.set_detail("particles_removed", ledger.particles_removed);
     summary.set_detail("grid_nodes_allocated", solver.sparse_grid().node_count());
-    summary.set_detail(
-        "shape_function",
-        solver.settings().shape_function == config::ShapeFunction::gimp ? "gimp" : "linear");
+    summary.set_detail("shape_function", shape_function_name(solver.settings().shape_function));
     summary.set_detail("update",
                        solver.settings().update == config::MpmUpdate::musl ? "musl" : "usl");
     summary.set_detail("peak_memory_bytes", peak_memory_bytes());

@@ -38,13 +38,15 @@ int main(int argc, char** argv) {
   app.add_option("--scene", scene_file, "scene file")->required()->check(CLI::ExistingFile);
   app.add_option("--steps", steps, "steps to time (after one warm-up step)")->capture_default_str();
   app.add_option("--threads", threads, "OpenMP threads")->capture_default_str();
-  app.add_option("--shape", shape, "linear or gimp")->check(CLI::IsMember({"linear", "gimp"}));
+  app.add_option("--shape", shape, "linear, gimp or cpgimp")
+      ->check(CLI::IsMember({"linear", "gimp", "cpgimp"}));
   CLI11_PARSE(app, argc, argv);
 
   omp_set_num_threads(threads);
   auto scene = mpfd::config::load_scene(scene_file);
-  scene.solver.mpm.shape_function =
-      shape == "gimp" ? mpfd::config::ShapeFunction::gimp : mpfd::config::ShapeFunction::linear;
+  scene.solver.mpm.shape_function = shape == "gimp"     ? mpfd::config::ShapeFunction::gimp
+                                    : shape == "cpgimp" ? mpfd::config::ShapeFunction::cpgimp
+                                                        : mpfd::config::ShapeFunction::linear;
   mpfd::mpm::MpmSolver solver(scene, mpfd::mpm::MpmSettings::from_scene(scene));
   solver.advance(solver.stable_dt());  // warm-up: the grid arrays reach their size
   const double updates_before = solver.particle_updates();

@@ -145,7 +145,7 @@ struct Output {
 };
 
 enum class Method { fdm, mpm, cfdmp, afdmp };
-enum class ShapeFunction { linear, gimp };
+enum class ShapeFunction { linear, gimp, cpgimp };
 enum class MpmUpdate { musl, usl };
 
 struct FdmOptions {

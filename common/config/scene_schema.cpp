@@ -189,8 +189,12 @@ std::shared_ptr<const Table<Solver>> solver_table() {
   auto mpm = table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
   mpm->optional(
          "shape_function", &MpmOptions::shape_function,
-         Enum<ShapeFunction>({{"linear", ShapeFunction::linear}, {"gimp", ShapeFunction::gimp}}),
-         "linear: trilinear, T (2-7); gimp: W §2.3")
+         Enum<ShapeFunction>({{"linear", ShapeFunction::linear},
+                              {"gimp", ShapeFunction::gimp},
+                              {"cpgimp", ShapeFunction::cpgimp}}),
+         "linear: trilinear, T (2-7); gimp: uGIMP, W §2.3 (particle domains of constant size); "
+         "cpgimp: W §2.3's cpGIMP (domains stretched by the diagonal of the deformation "
+         "gradient)")
       .optional("update", &MpmOptions::update,
                 Enum<MpmUpdate>({{"musl", MpmUpdate::musl}, {"usl", MpmUpdate::usl}}),
                 "musl re-maps particle velocities to the nodes before the strain update, T (2-17)")

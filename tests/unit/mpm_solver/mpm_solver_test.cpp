@@ -70,6 +70,7 @@ TEST_P(ShapeAndUpdate, FreeFlightCollisionConservesMassAndMomentum) {
 INSTANTIATE_TEST_SUITE_P(Mpm, ShapeAndUpdate,
                          ::testing::Values(std::make_tuple(ShapeFunction::linear, MpmUpdate::musl),
                                            std::make_tuple(ShapeFunction::gimp, MpmUpdate::musl),
+                                           std::make_tuple(ShapeFunction::cpgimp, MpmUpdate::musl),
                                            std::make_tuple(ShapeFunction::linear, MpmUpdate::usl)));
 
 // Gas pushed against a wall: the momentum the wall takes is in the ledger, so

@@ -59,9 +59,8 @@ SodErrors sod_errors(int cells, config::ShapeFunction shape) {
 void check_convergence(config::ShapeFunction shape, const std::vector<int>& resolutions,
                        double min_order, double max_energy_drift) {
   verification::ConvergenceStudy rho, vel, p;
-  std::printf("%s\n%8s %12s %12s %12s %12s\n",
-              shape == config::ShapeFunction::gimp ? "GIMP" : "trilinear MPM", "N", "L1(rho)",
-              "L1(u)", "L1(p)", "dE/E");
+  std::printf("%s\n%8s %12s %12s %12s %12s\n", shape_function_name(shape), "N", "L1(rho)", "L1(u)",
+              "L1(p)", "dE/E");
   for (const int n : resolutions) {
     const SodErrors e = sod_errors(n, shape);
     std::printf("%8d %12.4e %12.4e %12.4e %12.3e\n", n, e.density, e.velocity, e.pressure,
@@ -90,6 +89,10 @@ TEST(SodMpmFast, LinearAndGimpAt100CellsAreWithinAFewPercent) {
 
 TEST(SodMpmFast, GimpConvergesInL1From100To800Cells) {
   check_convergence(config::ShapeFunction::gimp, {100, 200, 400, 800}, 0.3, 5e-3);
+}
+
+TEST(SodMpmFast, CpGimpConvergesInL1From100To800Cells) {
+  check_convergence(config::ShapeFunction::cpgimp, {100, 200, 400, 800}, 0.6, 5e-4);
 }
 
 TEST(SodMpmFast, GimpIsMoreAccurateThanTrilinearAt400Cells) {
