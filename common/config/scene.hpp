@@ -147,7 +147,7 @@ struct Output {
 };
 
 enum class Method { fdm, mpm, cfdmp, afdmp };
-enum class ShapeFunction { linear, gimp };
+enum class ShapeFunction { linear, gimp, cpgimp };
 enum class MpmUpdate { musl, usl };
 
 struct FdmOptions {
@@ -159,6 +159,8 @@ struct FdmOptions {
 struct MpmOptions {
   ShapeFunction shape_function = ShapeFunction::linear;
   MpmUpdate update = MpmUpdate::musl;
+  double bulk_viscosity_quadratic = 1.5;  ///< c0 of the artificial bulk viscosity (S) [-]
+  double bulk_viscosity_linear = 0.06;    ///< c1 of the artificial bulk viscosity (S) [-]
 };
 
 struct Solver {

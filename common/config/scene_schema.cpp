@@ -189,11 +189,22 @@ std::shared_ptr<const Table<Solver>> solver_table() {
   auto mpm = table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
   mpm->optional(
          "shape_function", &MpmOptions::shape_function,
-         Enum<ShapeFunction>({{"linear", ShapeFunction::linear}, {"gimp", ShapeFunction::gimp}}),
-         "linear: trilinear, T (2-7); gimp: W §2.3")
+         Enum<ShapeFunction>({{"linear", ShapeFunction::linear},
+                              {"gimp", ShapeFunction::gimp},
+                              {"cpgimp", ShapeFunction::cpgimp}}),
+         "linear: trilinear, T (2-7); gimp: uGIMP, W §2.3 (particle domains of constant size); "
+         "cpgimp: W §2.3's cpGIMP (domains stretched by the diagonal of the deformation "
+         "gradient)")
       .optional("update", &MpmOptions::update,
                 Enum<MpmUpdate>({{"musl", MpmUpdate::musl}, {"usl", MpmUpdate::usl}}),
-                "musl re-maps particle velocities to the nodes before the strain update, T (2-17)");
+                "musl re-maps particle velocities to the nodes before the strain update, T (2-17)")
+      .optional("bulk_viscosity_quadratic", &MpmOptions::bulk_viscosity_quadratic,
+                Number("-", Range::at_least(0)),
+                "c0 of the artificial bulk viscosity q = rho l (c0 l d^2 - c1 c d) in compression "
+                "(S; l the smallest cell size, d the volumetric strain rate); 0 with the linear "
+                "term 0 turns it off")
+      .optional("bulk_viscosity_linear", &MpmOptions::bulk_viscosity_linear,
+                Number("-", Range::at_least(0)), "c1 of the artificial bulk viscosity (S)");
   auto t = table<Solver>("solver", "Which method runs the scene, and its options.");
   t->optional("method", &Solver::method,
               Enum<Method>({{"fdm", Method::fdm},

@@ -1,0 +1,149 @@
+#pragma once
+// Explicit MPM on a sparse background grid, T §2.1.2, one step = (2-9)-(2-21):
+//
+//   1. rebuild_grid()         blocks where particles are; particles binned by block
+//   2. particles_to_grid()    m_I (2-12), p_I (2-9), f_I = f_int (2-10)
+//                             [contact hook: per-body nodal mass, momentum and
+//                             mass gradient, T (2-22)-(2-32), are gathered here]
+//   3. integrate_nodes()      p_I^{n+1} = p_I + f_I dt (2-13), then the face conditions
+//                             [hook: a non-reflecting boundary adds its body force to
+//                             f_I before (2-13); shear-mode damping (2-33)-(2-48) and
+//                             the contact correction act on f_I, p_I^{n+1} after it,
+//                             over the cells' 8 nodes, before step 4 reads them]
+//   4. update_and_remap_velocities()
+//                             v_p += sum f_I / m_I N_Ip dt (2-15), and in the same
+//                             particle pass (MUSL) the remap sum m_p N_Ip v_p^{n+1} (2-17);
+//   5.                        then / m_I and the face conditions
+//   6. update_particles()     x_p += sum p_I^{n+1} / m_I N_Ip dt (2-16); strain and spin
+//                             increments (2-18), (2-19) from the step-5 (MUSL) or
+//                             step-3 (USL) nodal velocities; density (2-20); bulk
+//                             viscosity; Jaumann rotation and the constitutive
+//                             model (2-21) with the program burn (3-1), (3-2)
+//   7. remove_outflow()       particles that left through an outflow face
+//
+// USL skips steps 4 and 5 and does (2-15) in step 6. All weights are N^n (the
+// particles' positions at the start of the step). Nothing is allocated inside a
+// step once the grid's arrays have reached their largest size.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "common/config/scene.hpp"
+#include "mpm_solver/bulk_viscosity.hpp"
+#include "mpm_solver/material/constitutive_model.hpp"
+#include "mpm_solver/particle_generation.hpp"
+#include "mpm_solver/particle_stencil.hpp"
+#include "mpm_solver/sparse_grid.hpp"
+
+namespace mpfd::mpm {
+
+struct MpmSettings {
+  double cfl = 0.5;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
+  config::ShapeFunction shape_function = config::ShapeFunction::linear;
+  config::MpmUpdate update = config::MpmUpdate::musl;
+  double bulk_viscosity_quadratic = 1.5;  ///< c0
+  double bulk_viscosity_linear = 0.06;    ///< c1
+
+  /// The settings a scene asks for.
+  static MpmSettings from_scene(const config::Scene& scene);
+};
+
+/// The scene-file name of a shape function: "linear", "gimp", "cpgimp".
+[[nodiscard]] inline const char* shape_function_name(config::ShapeFunction f) {
+  switch (f) {
+    case config::ShapeFunction::gimp:
+      return "gimp";
+    case config::ShapeFunction::cpgimp:
+      return "cpgimp";
+    case config::ShapeFunction::linear:
+      break;
+  }
+  return "linear";
+}
+
+/// What the domain holds: mass, momentum, kinetic and internal energy.
+struct MpmTotals {
+  double mass = 0.0;                 ///< [kg]
+  std::array<double, 3> momentum{};  ///< [kg m/s]
+  double kinetic_energy = 0.0;       ///< [J]
+  double internal_energy = 0.0;      ///< sum m_p e_p [J]
+};
+
+/// What crossed the domain's faces since the start (positive: out of the domain).
+struct BoundaryLedger {
+  double mass = 0.0;                 ///< carried out by removed particles [kg]
+  std::array<double, 3> momentum{};  ///< carried out, minus the impulse walls gave [kg m/s]
+  double energy = 0.0;               ///< kinetic + internal energy carried out [J]
+  std::int64_t particles_removed = 0;
+};
+
+class MpmSolver {
+ public:
+  /// Particles from the scene's bodies and charges (particle_generation.hpp),
+  /// with a constitutive model per material used. Throws mpfd::Error for a
+  /// scene this solver cannot run.
+  MpmSolver(const config::Scene& scene, MpmSettings settings);
+  ~MpmSolver();
+  MpmSolver(const MpmSolver&) = delete;
+  MpmSolver& operator=(const MpmSolver&) = delete;
+
+  /// cfl * h_min / max_p (c_p + |v_p|) [s] at the current state.
+  [[nodiscard]] double stable_dt() const { return stable_dt_; }
+  /// The step to take toward `target` [s]: stable_dt, or the time left, or
+  /// half of it when one more full step would leave a sliver.
+  [[nodiscard]] double step_toward(double target) const;
+  /// One step of size dt [s]. Throws mpfd::Error if a particle's volume collapses.
+  void advance(double dt);
+  void advance_to(double end);
+
+  [[nodiscard]] double time() const { return time_; }
+  [[nodiscard]] std::int64_t steps() const { return steps_; }
+  /// Sum over steps of the particles updated [-].
+  [[nodiscard]] double particle_updates() const { return particle_updates_; }
+  [[nodiscard]] const ParticleSet& particles() const { return particles_; }
+  [[nodiscard]] const std::vector<BodyInfo>& bodies() const { return bodies_; }
+  [[nodiscard]] const grid::UniformGrid& grid() const { return grid_.grid(); }
+  [[nodiscard]] const SparseGrid& sparse_grid() const { return grid_; }
+  [[nodiscard]] const MpmSettings& settings() const { return settings_; }
+  [[nodiscard]] MpmTotals totals() const;
+  [[nodiscard]] const BoundaryLedger& boundary_ledger() const { return ledger_; }
+  /// Burn fraction F (T (3-2)) of particle p now.
+  [[nodiscard]] double burn_fraction(std::size_t p) const;
+
+ private:
+  void rebuild_grid();
+  /// GIMP half-widths of particle p per axis [grid units]: its body's, times F_aa for cpGIMP.
+  void particle_half_width(std::size_t p, double half_width[3]) const;
+  void particles_to_grid();
+  void integrate_nodes(double dt);
+  void update_and_remap_velocities(double dt);
+  void update_particles(double dt);
+  void remove_outflow();
+  /// Zeroes the constrained components of `field` at nodes on fixed and
+  /// symmetry faces; with `force` and dt also keeps (2-15) consistent with (2-13).
+  void apply_face_conditions(std::array<std::vector<double>, 3>& field,
+                             std::array<std::vector<double>, 3>* force, double dt);
+  void compute_stable_dt();
+
+  MpmSettings settings_;
+  std::array<config::BoundaryKind, 6> faces_{};
+  SparseGrid grid_;
+  StencilGeometry geometry_;
+  int axis_mask_ = 0;
+  double min_spacing_ = 0.0;
+  BulkViscosity viscosity_;
+  ParticleSet particles_;
+  std::vector<BodyInfo> bodies_;
+  std::vector<std::unique_ptr<ConstitutiveModel>> models_;  // by material index; null if unused
+  std::vector<std::int32_t> home_slot_;                     // scratch, per particle
+  std::vector<std::uint8_t> leaving_;                       // scratch, per particle
+  double stable_dt_ = 0.0;
+  double time_ = 0.0;
+  std::int64_t steps_ = 0;
+  double particle_updates_ = 0.0;
+  BoundaryLedger ledger_;
+};
+
+}  // namespace mpfd::mpm
