@@ -192,6 +192,14 @@ void EulerSolver::advance(double dt) {
     tracker_->advect(VelocityView{{velocity_[0], velocity_[1], velocity_[2]}}, dt, tracer_faces_);
   }
   limit_after_step_.reset();
+  // One material everywhere and no mixed cells: the sweeps need not look at
+  // materials cell by cell. Checked every step (a restore or data from
+  // outside may change them; the scan costs ~1e-3 of a step).
+  const auto& m = state_.material;
+  only_material_.reset();
+  if (m.front() != kMixedMaterial &&
+      std::all_of(m.begin(), m.end(), [&](std::uint8_t x) { return x == m.front(); }))
+    only_material_ = m.front();
   // T (2-52): U^{n+1} = Lz Ly Lx Lx Ly Lz U^n, each over dt/2; the rightmost acts first.
   int sweeps_left = 0;
   for (int a = 0; a < 3; ++a) sweeps_left += 2 * g.is_active(a);
@@ -264,7 +272,7 @@ double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
         const PencilBlock block{axis,        g.cell_index(origin),
                                 stride,      static_cast<std::size_t>(n[axis]),
                                 lane_stride, lanes};
-        const BlockTransfer transfer{state_, block, faces, first, last};
+        const BlockTransfer transfer{state_, block, faces, first, last, only_material_};
         EndFluxes ends;
         const auto problem = sweep_block(pencil, transfer, step, eos_, ends,
                                          last_of_step ? &crossing : nullptr, &fastest);

@@ -106,7 +106,8 @@ class EulerSolver {
   // min dx/(|u|+c) over the grid after the last step, found in its last
   // sweep; empty where unknown (before a step, after writes from outside).
   std::optional<double> limit_after_step_;
-  QuietFaceFlux quiet_flux_;  // through faces of still boundary cells
+  std::optional<std::uint8_t> only_material_;  // of every cell, this step, if one
+  QuietFaceFlux quiet_flux_;                   // through faces of still boundary cells
   std::optional<MultiMaterialTracker> tracker_;
   TracerBoundaries tracer_faces_{};
   std::array<std::vector<double>, 3> velocity_;  // scratch for tracer advection

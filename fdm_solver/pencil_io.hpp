@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "common/config/scene.hpp"
 #include "fdm_solver/euler_state.hpp"
@@ -46,6 +48,9 @@ struct BlockTransfer {
   AxisBoundaries faces;
   std::size_t first;  ///< first updated cell along the axis
   std::size_t last;   ///< one past the last updated cell
+  /// The material of every cell of the grid, if they share one (no mixed
+  /// cells): the block's materials need not be gathered.
+  std::optional<std::uint8_t> only_material;
 };
 
 /// Copies the material (and mixed cells' EOS) of cells [first - kGhost,
