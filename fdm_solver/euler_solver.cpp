@@ -201,11 +201,19 @@ void EulerSolver::advance(double dt) {
       std::all_of(m.begin(), m.end(), [&](std::uint8_t x) { return x == m.front(); }))
     only_material_ = m.front();
   // T (2-52): U^{n+1} = Lz Ly Lx Lx Ly Lz U^n, each over dt/2; the rightmost acts first.
-  int sweeps_left = 0;
-  for (int a = 0; a < 3; ++a) sweeps_left += 2 * g.is_active(a);
-  double limit = std::numeric_limits<double>::infinity();
+  // Two sweeps in a row along one axis (x x, or the only axis of a 1D grid)
+  // run together: their lines are read and written once.
+  std::array<int, 6> axes{};
+  int count = 0;
   for (const int axis : {2, 1, 0, 0, 1, 2})
-    if (g.is_active(axis)) limit = sweep(axis, 0.5 * dt, --sweeps_left == 0 && !tracker_);
+    if (g.is_active(axis)) axes[static_cast<std::size_t>(count++)] = axis;
+  double limit = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < count;) {
+    const int axis = axes[static_cast<std::size_t>(k)];
+    const bool twice = k + 1 < count && axes[static_cast<std::size_t>(k + 1)] == axis;
+    k += twice ? 2 : 1;
+    limit = sweep(axis, 0.5 * dt, twice, k == count && !tracker_);
+  }
   // The next step's limit comes from the last sweep where cells moved; a
   // mixed cell's EOS is refitted after it, so then a separate scan is needed.
   if (!tracker_) limit_after_step_ = std::min(limit, still_limit());
@@ -218,13 +226,21 @@ void EulerSolver::advance(double dt) {
   ++steps_;
 }
 
-double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
+double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
   const auto& g = state_.grid;
   const auto& n = g.cells();
-  if (options_.skip_quiet) box_.grow(axis, kChangeReach, n[axis]);
+  const int sweeps = twice ? 2 : 1;
+  // The range of updated cells along the axis of each sweep: the box grows
+  // before each. The lines (the other two axes) are the same for both.
+  std::array<std::size_t, 2> first{}, last{};
+  for (int k = 0; k < sweeps; ++k) {
+    if (options_.skip_quiet) box_.grow(axis, kChangeReach, n[axis]);
+    first[k] = static_cast<std::size_t>(box_.lower[axis]);
+    last[k] = static_cast<std::size_t>(box_.upper[axis]);
+  }
   double fastest = std::numeric_limits<double>::infinity();
   if (box_.empty()) {
-    count_quiet_faces(axis, dt, false, false);
+    for (int k = 0; k < sweeps; ++k) count_quiet_faces(axis, dt, false, false);
     return fastest;
   }
   // The two other axes; a1 varies fastest from pencil to pencil, and is x
@@ -235,9 +251,11 @@ double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
                              boundaries_[static_cast<config::Face>(2 * axis + 1)]};
   const SweepStep step{dt, g.spacing()[axis], options_.viscosity};
   const double face_area = g.spacing()[a1] * g.spacing()[a2];
-  const std::size_t first = static_cast<std::size_t>(box_.lower[axis]);
-  const std::size_t last = static_cast<std::size_t>(box_.upper[axis]);
-  const bool at_lower = first == 0, at_upper = last == static_cast<std::size_t>(n[axis]);
+  std::array<bool, 2> at_lower{}, at_upper{};
+  for (int k = 0; k < sweeps; ++k) {
+    at_lower[k] = first[k] == 0;
+    at_upper[k] = last[k] == static_cast<std::size_t>(n[axis]);
+  }
   const int lines1 = box_.upper[a1] - box_.lower[a1];
   const int lines2 = box_.upper[a2] - box_.lower[a2];
 
@@ -255,10 +273,11 @@ double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
     crossing.inv_spacing[static_cast<std::size_t>(b)] = 1.0 / g.spacing()[b];
     crossing.active[static_cast<std::size_t>(b)] = g.is_active(b);
   }
-  double leaving[kVariables] = {};  // an array, for the OpenMP reduction
+  double leaving[2][kVariables] = {};  // arrays, for the OpenMP reduction
   std::optional<std::pair<grid::Index3, BadCell>> bad;
-  const long long work = static_cast<long long>(last - first) * lines1 * lines2;
-#pragma omp parallel reduction(+ : leaving[:kVariables]) reduction(min : fastest) if (work >= kParallelCells)
+  const long long work =
+      static_cast<long long>(last[sweeps - 1] - first[sweeps - 1]) * lines1 * lines2;
+#pragma omp parallel reduction(+ : leaving[:2][:kVariables]) reduction(min : fastest) if (work >= kParallelCells)
   {
     Pencil& pencil = pencils_[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for collapse(2) schedule(static)
@@ -272,10 +291,13 @@ double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
         const PencilBlock block{axis,        g.cell_index(origin),
                                 stride,      static_cast<std::size_t>(n[axis]),
                                 lane_stride, lanes};
-        const BlockTransfer transfer{state_, block, faces, first, last, only_material_};
-        EndFluxes ends;
-        const auto problem = sweep_block(pencil, transfer, step, eos_, ends,
-                                         last_of_step ? &crossing : nullptr, &fastest);
+        const BlockTransfer t1{state_, block, faces, first[0], last[0], only_material_};
+        const BlockTransfer t2{state_, block, faces, first[1], last[1], only_material_};
+        std::array<EndFluxes, 2> ends;
+        const CrossingTimeRequest* asked = last_of_step ? &crossing : nullptr;
+        const auto problem =
+            twice ? sweep_block_twice(pencil, t1, t2, step, eos_, ends, asked, &fastest)
+                  : sweep_block(pencil, t1, step, eos_, ends[0], asked, &fastest);
         if (problem) {
 #pragma omp critical(mpfd_fdm_bad_cell)
           if (!bad) {
@@ -287,12 +309,13 @@ double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
           continue;
         }
         // Momentum slots are rotated in the pencil; map them back to x, y, z.
-        for (std::size_t s = 0; s < kVariables; ++s) {
-          std::size_t v = s;
-          if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
-          if (at_lower) leaving[v] -= ends.lower[s] * face_area;
-          if (at_upper) leaving[v] += ends.upper[s] * face_area;
-        }
+        for (int k = 0; k < sweeps; ++k)
+          for (std::size_t s = 0; s < kVariables; ++s) {
+            std::size_t v = s;
+            if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
+            if (at_lower[k]) leaving[k][v] -= ends[k].lower[s] * face_area;
+            if (at_upper[k]) leaving[k][v] += ends[k].upper[s] * face_area;
+          }
       }
   }
   if (bad) {
@@ -305,11 +328,14 @@ double EulerSolver::sweep(int axis, double dt, bool last_of_step) {
                 std::to_string(value.pressure) +
                 " Pa; both must stay positive. Reduce time.cfl or refine the grid.");
   }
-  for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[v];
-  count_quiet_faces(axis, dt, at_lower, at_upper);
-  // A cell-update is one cell advanced by one whole step: a share of the
-  // step's sweeps.
-  cell_updates_ += static_cast<double>(last - first) * lines1 * lines2 / (2.0 * g.dimension());
+  for (int k = 0; k < sweeps; ++k) {
+    for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[k][v];
+    count_quiet_faces(axis, dt, at_lower[k], at_upper[k]);
+    // A cell-update is one cell advanced by one whole step: a share of the
+    // step's sweeps.
+    cell_updates_ +=
+        static_cast<double>(last[k] - first[k]) * lines1 * lines2 / (2.0 * g.dimension());
+  }
   return fastest;
 }
 

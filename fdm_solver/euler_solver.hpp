@@ -82,9 +82,10 @@ class EulerSolver {
   [[nodiscard]] const Totals& outflow() const { return outflow_; }
 
  private:
-  /// One sweep; the last of a step also returns the smallest crossing time
-  /// of the cells it updated (+inf if none).
-  double sweep(int axis, double dt, bool last_of_step);
+  /// One sweep, or two in a row along `axis` (twice); the last of a step
+  /// also returns the smallest crossing time of the cells it updated (+inf
+  /// if none).
+  double sweep(int axis, double dt, bool twice, bool last_of_step);
   /// Adds what crossed the faces normal to `axis` at still boundary cells.
   void count_quiet_faces(int axis, double dt, bool lower_updated, bool upper_updated);
   /// min of dx_a / (|u_a| + c) over active axes a and the cells [from, to)

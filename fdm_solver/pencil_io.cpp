@@ -141,6 +141,14 @@ void gather_rows(const BlockTransfer& t, std::size_t from, std::size_t to, Penci
   if (from <= block.length + kGhost && to > block.length + kGhost) upper_ghosts(t, make);
 }
 
+void remake_ghosts(const BlockTransfer& t, Pencil& pencil) {
+  const auto make = [&](std::size_t ghost, std::size_t source, bool mirror) {
+    make_ghost_state(pencil, t.block.lanes, ghost, source, mirror);
+  };
+  if (needs_lower_ghosts(t)) lower_ghosts(t, make);
+  if (needs_upper_ghosts(t)) upper_ghosts(t, make);
+}
+
 void scatter_rows(const Pencil& pencil, const BlockTransfer& t, std::size_t from, std::size_t to) {
   for (std::size_t s = 0; s < 5; ++s)
     copy_out(pencil.u_new[s].data(), t.block, from - kGhost, to - kGhost,

@@ -64,6 +64,10 @@ void gather_materials(const BlockTransfer& t, Pencil& pencil);
 /// `first`, so that each ghost's source is copied when it is made.
 void gather_rows(const BlockTransfer& t, std::size_t from, std::size_t to, Pencil& pencil);
 
+/// Makes the ghosts of the domain faces that t's stencil reaches again from
+/// the cells in pencil.u (after they have changed).
+void remake_ghosts(const BlockTransfer& t, Pencil& pencil);
+
 /// Copies pencil.u_new at positions [from, to) (updated cells) back into the state.
 void scatter_rows(const Pencil& pencil, const BlockTransfer& t, std::size_t from, std::size_t to);
 

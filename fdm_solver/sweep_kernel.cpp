@@ -357,10 +357,18 @@ double max_crossing_rate(const Views& a, const Eos& eos, std::size_t lo, std::si
 
 /// The whole sweep of the block with the EOS resolved as `eos`: entries
 /// [begin, end) are updated.
+/// Whether a staged sweep reads its cells from the state as it goes (else
+/// the pencil holds them) and writes them back (else they stay in u_new).
+struct Traffic {
+  bool gather;
+  bool scatter;
+};
+
 template <class Eos>
 std::optional<BadCell> staged_sweep(Pencil& pencil, const BlockTransfer& t, const Eos& eos,
                                     const EntryModels& entries, const SweepStep& step,
-                                    const CrossingTimeRequest* crossing, double* min_time) {
+                                    const CrossingTimeRequest* crossing, double* min_time,
+                                    Traffic traffic) {
   const Views a(pencil);
   const std::size_t w = t.block.lanes;
   const std::size_t first = t.first + kGhost, last = t.last + kGhost;  // pencil positions
@@ -379,7 +387,7 @@ std::optional<BadCell> staged_sweep(Pencil& pencil, const BlockTransfer& t, cons
   double rate = 0.0;  // the largest crossing rate of the updated cells, if asked
   while (updated < end) {
     const std::size_t front = std::min(updated + chunk, end);
-    gather_rows(t, gathered, front / w + kGhost, pencil);
+    if (traffic.gather) gather_rows(t, gathered, front / w + kGhost, pencil);
     gathered = front / w + kGhost;
     // Refuse unphysical cells before they are used.
     if (state_stage(a, eos, w, state_done, front + 2 * w, begin, end) > 0.0)
@@ -394,7 +402,7 @@ std::optional<BadCell> staged_sweep(Pencil& pencil, const BlockTransfer& t, cons
     suspect += corrector_stage<Eos>(a, w, updated, front, courant);
     if (crossing != nullptr)
       rate = std::max(rate, max_crossing_rate(a, eos, updated, front, *crossing));
-    scatter_rows(pencil, t, updated / w, front / w);
+    if (traffic.scatter) scatter_rows(pencil, t, updated / w, front / w);
     updated = front;
   }
   bool repaired = false;
@@ -406,11 +414,57 @@ std::optional<BadCell> staged_sweep(Pencil& pencil, const BlockTransfer& t, cons
          ++pass)
       repaired = true;
   if (repaired) {
-    scatter_rows(pencil, t, first, last);
+    if (traffic.scatter) scatter_rows(pencil, t, first, last);
     if (crossing != nullptr) rate = max_crossing_rate(a, eos, begin, end, *crossing);
   }
   if (crossing != nullptr) *min_time = std::min(*min_time, 1.0 / rate);
   return std::nullopt;
+}
+
+/// The material of the block's cells if they share one (no mixed cell) on
+/// the stencil of t, gathering the materials first unless the grid has one.
+std::optional<std::uint8_t> block_material(Pencil& pencil, const BlockTransfer& t) {
+  if (t.only_material) return t.only_material;
+  gather_materials(t, pencil);
+  const std::size_t w = t.block.lanes;
+  const std::uint8_t* lo = pencil.material.data() + t.first * w;  // position first - kGhost
+  const std::uint8_t* hi = pencil.material.data() + (t.last + 2 * kGhost) * w;
+  const std::uint8_t one = *lo;
+  if (one == kMixedMaterial || !std::all_of(lo, hi, [one](std::uint8_t m) { return m == one; }))
+    return std::nullopt;
+  return one;
+}
+
+/// What crossed the ends of t's range: dt F - dx D at the faces below its
+/// first cell and above its last.
+void add_end_fluxes(const Pencil& pencil, const BlockTransfer& t, const SweepStep& step,
+                    EndFluxes& ends) {
+  const std::size_t w = t.block.lanes;
+  const std::size_t begin = (t.first + kGhost) * w, end = (t.last + kGhost) * w;
+  for (std::size_t v = 0; v < 5; ++v) {
+    const double* f = pencil.flux[v].data();
+    const double* d = pencil.diffusion[v].data();
+    for (std::size_t lane = 0; lane < w; ++lane) {
+      ends.lower[v] += step.dt * f[begin - w + lane] - step.dx * d[begin - w + lane];
+      ends.upper[v] += step.dt * f[end - w + lane] - step.dx * d[end - w + lane];
+    }
+  }
+}
+
+/// Runs body(eos) with the block's EOS resolved: one model inlined, or each
+/// entry's own.
+template <class Body>
+auto with_block_eos(const Pencil& pencil, std::optional<std::uint8_t> material,
+                    std::span<const eos::AnyEos> models, const Body& body) {
+  const EntryModels entries{models, pencil.material.data(), pencil.mix_gamma.data(),
+                            pencil.mix_pinf.data()};
+  if (!material) return body(entries, entries);
+  return std::visit(
+      [&](const auto& model) {
+        using Model = std::decay_t<decltype(model)>;
+        return body(OneModel<Model>{model}, entries);
+      },
+      models[*material]);
 }
 
 }  // namespace
@@ -420,43 +474,43 @@ namespace MPFD_SWEEP_ISA {
 std::optional<BadCell> sweep_block(Pencil& pencil, const BlockTransfer& t, const SweepStep& step,
                                    std::span<const eos::AnyEos> models, EndFluxes& ends,
                                    const CrossingTimeRequest* crossing, double* min_crossing_time) {
-  // Flattened entries j = position * lanes + lane; the neighbour along the
-  // line is j +- w.
-  const std::size_t w = t.block.lanes;
-  const std::size_t begin = (t.first + kGhost) * w, end = (t.last + kGhost) * w;
-  const std::uint8_t* mat = pencil.material.data();
-  const EntryModels entries{models, mat, pencil.mix_gamma.data(), pencil.mix_pinf.data()};
-  // One dispatch per block in the common case of one material on its stencil.
-  bool uniform = true;
-  std::uint8_t one = 0;
-  if (t.only_material) {
-    one = *t.only_material;
-  } else {
-    gather_materials(t, pencil);
-    one = mat[begin - 3 * w];
-    uniform = one != kMixedMaterial && std::all_of(mat + begin - 3 * w, mat + end + 3 * w,
-                                                   [one](std::uint8_t m) { return m == one; });
-  }
-  const auto bad =
-      uniform ? std::visit(
-                    [&](const auto& model) {
-                      using Model = std::decay_t<decltype(model)>;
-                      return staged_sweep(pencil, t, OneModel<Model>{model}, entries, step,
-                                          crossing, min_crossing_time);
-                    },
-                    models[one])
-              : staged_sweep(pencil, t, entries, entries, step, crossing, min_crossing_time);
+  const auto bad = with_block_eos(
+      pencil, block_material(pencil, t), models, [&](const auto& eos, const EntryModels& entries) {
+        return staged_sweep(pencil, t, eos, entries, step, crossing, min_crossing_time,
+                            {.gather = true, .scatter = true});
+      });
   if (bad) return bad;
-  // What crossed the ends: dt F - dx D at the faces below begin and end.
-  for (std::size_t v = 0; v < 5; ++v) {
-    const double* f = pencil.flux[v].data();
-    const double* d = pencil.diffusion[v].data();
-    for (std::size_t lane = 0; lane < w; ++lane) {
-      ends.lower[v] += step.dt * f[begin - w + lane] - step.dx * d[begin - w + lane];
-      ends.upper[v] += step.dt * f[end - w + lane] - step.dx * d[end - w + lane];
-    }
-  }
+  add_end_fluxes(pencil, t, step, ends);
   return std::nullopt;
+}
+
+std::optional<BadCell> sweep_block_twice(Pencil& pencil, const BlockTransfer& t1,
+                                         const BlockTransfer& t2, const SweepStep& step,
+                                         std::span<const eos::AnyEos> models,
+                                         std::array<EndFluxes, 2>& ends,
+                                         const CrossingTimeRequest* crossing,
+                                         double* min_crossing_time) {
+  const std::size_t w = t2.block.lanes;
+  // t2's stencil holds t1's, and what lies outside t1 the first sweep leaves.
+  gather_rows(t2, t2.first, t2.last + 2 * kGhost, pencil);
+  return with_block_eos(
+      pencil, block_material(pencil, t2), models,
+      [&](const auto& eos, const EntryModels& entries) -> std::optional<BadCell> {
+        if (auto bad = staged_sweep(pencil, t1, eos, entries, step, nullptr, nullptr,
+                                    {.gather = false, .scatter = false}))
+          return bad;
+        add_end_fluxes(pencil, t1, step, ends[0]);
+        for (std::size_t v = 0; v < 5; ++v)
+          std::copy(pencil.u_new[v].begin() + static_cast<std::ptrdiff_t>((t1.first + kGhost) * w),
+                    pencil.u_new[v].begin() + static_cast<std::ptrdiff_t>((t1.last + kGhost) * w),
+                    pencil.u[v].begin() + static_cast<std::ptrdiff_t>((t1.first + kGhost) * w));
+        remake_ghosts(t2, pencil);  // the mirrors of cells the first sweep moved
+        if (auto bad = staged_sweep(pencil, t2, eos, entries, step, crossing, min_crossing_time,
+                                    {.gather = false, .scatter = true}))
+          return bad;
+        add_end_fluxes(pencil, t2, step, ends[1]);
+        return std::nullopt;
+      });
 }
 
 }  // namespace MPFD_SWEEP_ISA

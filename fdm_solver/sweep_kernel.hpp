@@ -71,14 +71,31 @@ std::optional<BadCell> sweep_block(Pencil& pencil, const BlockTransfer& t, const
                                    const CrossingTimeRequest* crossing = nullptr,
                                    double* min_crossing_time = nullptr);
 
-/// sweep_block built for one instruction set: the x86-64 baseline (SSE2) and,
-/// where the compiler targets x86-64, AVX2 without FMA (so that both give the
-/// same bits). sweep_block calls the widest one the processor has.
+/// Two sweeps in a row along one axis over the same lines (the x x of
+/// (2-52)): t1 and t2 differ only in the range of updated cells, t2's holding
+/// t1's. The lines are gathered and scattered once; ends[0] and ends[1] get
+/// what crossed the ends of each sweep's range. The same bits as two
+/// sweep_block calls.
+std::optional<BadCell> sweep_block_twice(Pencil& pencil, const BlockTransfer& t1,
+                                         const BlockTransfer& t2, const SweepStep& step,
+                                         std::span<const eos::AnyEos> models,
+                                         std::array<EndFluxes, 2>& ends,
+                                         const CrossingTimeRequest* crossing = nullptr,
+                                         double* min_crossing_time = nullptr);
+
+/// sweep_block and sweep_block_twice built for one instruction set: the
+/// x86-64 baseline (SSE2) and, where the compiler targets x86-64, AVX2
+/// without FMA (so that both give the same bits). The functions above call
+/// the widest one the processor has.
 #define MPFD_DECLARE_SWEEP_BLOCK                                                                 \
   std::optional<BadCell> sweep_block(Pencil& pencil, const BlockTransfer& t,                     \
                                      const SweepStep& step, std::span<const eos::AnyEos> models, \
                                      EndFluxes& ends, const CrossingTimeRequest* crossing,       \
-                                     double* min_crossing_time);
+                                     double* min_crossing_time);                                 \
+  std::optional<BadCell> sweep_block_twice(                                                      \
+      Pencil& pencil, const BlockTransfer& t1, const BlockTransfer& t2, const SweepStep& step,   \
+      std::span<const eos::AnyEos> models, std::array<EndFluxes, 2>& ends,                       \
+      const CrossingTimeRequest* crossing, double* min_crossing_time);
 namespace isa_baseline {
 MPFD_DECLARE_SWEEP_BLOCK
 }
