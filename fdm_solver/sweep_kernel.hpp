@@ -14,10 +14,10 @@
 //       U_{i+1/2} = (Ubar_i + Ubar_{i+1})/2 - dt/(2dx) (F(Ubar_{i+1}) - F(Ubar_i))
 //       U_i^new   = Ubar_i - dt/dx (F(U_{i+1/2}) - F(U_{i-1/2})).
 // The stages run in chunks of a few positions, each stage lagging the one it
-// reads by its stencil reach, so that a chunk's working set stays in the L1
-// cache; the state is updated in place behind the last stage. The EOS is
-// resolved once per block when its cells share one material, and inlined.
-// Pure functions of the pencil: no allocation, no I/O, no globals.
+// reads by its stencil reach, so that a chunk's working set stays in cache;
+// the state is read a few positions ahead of the update and written behind
+// it. The EOS is resolved once per block when its cells share one material,
+// and inlined. No allocation, no I/O, no globals.
 
 #include <array>
 #include <cstddef>
