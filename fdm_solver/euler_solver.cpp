@@ -12,6 +12,7 @@
 #include "common/core/parallel_for.hpp"
 #include "common/initial/initial_cells.hpp"
 #include "fdm_solver/cell_eos.hpp"
+#include "fdm_solver/cell_kinematics.hpp"
 #include "fdm_solver/pencil_io.hpp"
 #include "fdm_solver/sweep_kernel.hpp"
 
@@ -86,48 +87,72 @@ EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)] =
-          line_limit(state_.grid.cell_index(0, j, k));
+          line_limit(state_.grid.cell_index(0, j, k), 0, n[0]);
 }
 
-double EulerSolver::line_limit(std::size_t start) const {
-  // min over the x-line at `start` of dx_a / (|u_a| + c) over active axes,
-  // with one EOS dispatch per line when it holds one material.
+double EulerSolver::line_limit(std::size_t start, int from, int to) const {
+  // One EOS dispatch per segment when it holds one material. The formula is
+  // the sweep kernel's (cell_kinematics.hpp), so both give the same bits.
   const auto& g = state_.grid;
-  const std::size_t end = start + static_cast<std::size_t>(g.cells()[0]);
   const auto& u = state_.u;
   const auto& mat = state_.material;
-  double limit = std::numeric_limits<double>::infinity();
-  const auto scan = [&](const auto& sound_speed_at, std::size_t first, std::size_t last) {
+  const std::size_t first = start + static_cast<std::size_t>(from);
+  const std::size_t last = start + static_cast<std::size_t>(to);
+  const double inv_dx[3] = {1.0 / g.spacing()[0], 1.0 / g.spacing()[1], 1.0 / g.spacing()[2]};
+  if (first >= last) return std::numeric_limits<double>::infinity();
+  double rate = 0.0;
+  const auto scan = [&](const auto& sound_speed_at) {
     for (std::size_t i = first; i < last; ++i) {
       const double rho = u[kDensity][i];
+      const double inv_rho = 1.0 / rho;
       const double m[3] = {u[kMomentumX][i], u[kMomentumY][i], u[kMomentumZ][i]};
-      const double e =
-          (u[kEnergy][i] - 0.5 * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / rho) / rho;
+      const double e = internal_energy_per_mass(inv_rho, m[0], m[1], m[2], u[kEnergy][i]);
       const double c = sound_speed_at(i, rho, e);
       for (int a = 0; a < 3; ++a)
-        if (g.is_active(a)) limit = std::min(limit, g.spacing()[a] / (std::abs(m[a] / rho) + c));
+        if (g.is_active(a)) rate = std::max(rate, crossing_rate(inv_dx[a], m[a], inv_rho, c));
     }
   };
   const bool one_material =
-      mat[start] != kMixedMaterial && std::all_of(mat.begin() + static_cast<std::ptrdiff_t>(start),
-                                                  mat.begin() + static_cast<std::ptrdiff_t>(end),
-                                                  [&](std::uint8_t m) { return m == mat[start]; });
+      mat[first] != kMixedMaterial && std::all_of(mat.begin() + static_cast<std::ptrdiff_t>(first),
+                                                  mat.begin() + static_cast<std::ptrdiff_t>(last),
+                                                  [&](std::uint8_t m) { return m == mat[first]; });
   if (one_material) {
     std::visit(
         [&](const auto& model) {
-          scan([&](std::size_t, double rho, double e) { return model.sound_speed(rho, e); }, start,
-               end);
+          scan([&](std::size_t, double rho, double e) { return model.sound_speed(rho, e); });
         },
-        eos_[mat[start]]);
+        eos_[mat[first]]);
   } else {
-    scan([&](std::size_t i, double rho,
-             double e) { return cell_sound_speed(state_, eos_, i, rho, e); },
-         start, end);
+    scan([&](std::size_t i, double rho, double e) {
+      return cell_sound_speed(state_, eos_, i, rho, e);
+    });
   }
+  return 1.0 / rate;  // 1/max = min of 1/rate, bit for bit (division is monotonic)
+}
+
+double EulerSolver::still_limit() const {
+  const auto& n = state_.grid.cells();
+  double limit = std::numeric_limits<double>::infinity();
+#pragma omp parallel for collapse(2) reduction(min      \
+                                               : limit) \
+    schedule(static) if (state_.grid.cell_count() >= kParallelCells)
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j) {
+      const bool outside = box_.empty() || j < box_.lower[1] || j >= box_.upper[1] ||
+                           k < box_.lower[2] || k >= box_.upper[2];
+      if (outside) {
+        limit = std::min(limit, initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)]);
+        continue;
+      }
+      const std::size_t start = state_.grid.cell_index(0, j, k);
+      limit = std::min(
+          {limit, line_limit(start, 0, box_.lower[0]), line_limit(start, box_.upper[0], n[0])});
+    }
   return limit;
 }
 
 double EulerSolver::stable_dt() const {
+  if (limit_after_step_) return 2.0 * options_.cfl * *limit_after_step_;
   const auto& n = state_.grid.cells();
   double limit = std::numeric_limits<double>::infinity();
   // Lines outside the disturbed box are as they started: use their cached limit.
@@ -139,7 +164,7 @@ double EulerSolver::stable_dt() const {
       const bool still = box_.empty() || j < box_.lower[1] || j >= box_.upper[1] ||
                          k < box_.lower[2] || k >= box_.upper[2];
       const double line = still ? initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)]
-                                : line_limit(state_.grid.cell_index(0, j, k));
+                                : line_limit(state_.grid.cell_index(0, j, k), 0, n[0]);
       limit = std::min(limit, line);
     }
   return 2.0 * options_.cfl * limit;
@@ -166,9 +191,32 @@ void EulerSolver::advance(double dt) {
     });
     tracker_->advect(VelocityView{{velocity_[0], velocity_[1], velocity_[2]}}, dt, tracer_faces_);
   }
+  limit_after_step_.reset();
+  // One material everywhere and no mixed cells: the sweeps need not look at
+  // materials cell by cell. Checked every step (a restore or data from
+  // outside may change them; the scan costs ~1e-3 of a step).
+  const auto& m = state_.material;
+  only_material_.reset();
+  if (m.front() != kMixedMaterial &&
+      std::all_of(m.begin(), m.end(), [&](std::uint8_t x) { return x == m.front(); }))
+    only_material_ = m.front();
   // T (2-52): U^{n+1} = Lz Ly Lx Lx Ly Lz U^n, each over dt/2; the rightmost acts first.
+  // Two sweeps in a row along one axis (x x, or the only axis of a 1D grid)
+  // run together: their lines are read and written once.
+  std::array<int, 6> axes{};
+  int count = 0;
   for (const int axis : {2, 1, 0, 0, 1, 2})
-    if (g.is_active(axis)) sweep(axis, 0.5 * dt);
+    if (g.is_active(axis)) axes[static_cast<std::size_t>(count++)] = axis;
+  double limit = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < count;) {
+    const int axis = axes[static_cast<std::size_t>(k)];
+    const bool twice = k + 1 < count && axes[static_cast<std::size_t>(k + 1)] == axis;
+    k += twice ? 2 : 1;
+    limit = sweep(axis, 0.5 * dt, twice, k == count && !tracker_);
+  }
+  // The next step's limit comes from the last sweep where cells moved; a
+  // mixed cell's EOS is refitted after it, so then a separate scan is needed.
+  if (!tracker_) limit_after_step_ = std::min(limit, still_limit());
   if (tracker_) {
     parallel_for(g.cell_count(),
                  [&](std::size_t c) { energy_[c] = specific_internal_energy(state_, c); });
@@ -178,13 +226,22 @@ void EulerSolver::advance(double dt) {
   ++steps_;
 }
 
-void EulerSolver::sweep(int axis, double dt) {
+double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
   const auto& g = state_.grid;
   const auto& n = g.cells();
-  if (options_.skip_quiet) box_.grow(axis, kChangeReach, n[axis]);
+  const int sweeps = twice ? 2 : 1;
+  // The range of updated cells along the axis of each sweep: the box grows
+  // before each. The lines (the other two axes) are the same for both.
+  std::array<std::size_t, 2> first{}, last{};
+  for (int k = 0; k < sweeps; ++k) {
+    if (options_.skip_quiet) box_.grow(axis, kChangeReach, n[axis]);
+    first[k] = static_cast<std::size_t>(box_.lower[axis]);
+    last[k] = static_cast<std::size_t>(box_.upper[axis]);
+  }
+  double fastest = std::numeric_limits<double>::infinity();
   if (box_.empty()) {
-    count_quiet_faces(axis, dt, false, false);
-    return;
+    for (int k = 0; k < sweeps; ++k) count_quiet_faces(axis, dt, false, false);
+    return fastest;
   }
   // The two other axes; a1 varies fastest from pencil to pencil, and is x
   // whenever possible so that neighbouring pencils share cache lines.
@@ -194,9 +251,11 @@ void EulerSolver::sweep(int axis, double dt) {
                              boundaries_[static_cast<config::Face>(2 * axis + 1)]};
   const SweepStep step{dt, g.spacing()[axis], options_.viscosity};
   const double face_area = g.spacing()[a1] * g.spacing()[a2];
-  const std::size_t first = static_cast<std::size_t>(box_.lower[axis]);
-  const std::size_t last = static_cast<std::size_t>(box_.upper[axis]);
-  const bool at_lower = first == 0, at_upper = last == static_cast<std::size_t>(n[axis]);
+  std::array<bool, 2> at_lower{}, at_upper{};
+  for (int k = 0; k < sweeps; ++k) {
+    at_lower[k] = first[k] == 0;
+    at_upper[k] = last[k] == static_cast<std::size_t>(n[axis]);
+  }
   const int lines1 = box_.upper[a1] - box_.lower[a1];
   const int lines2 = box_.upper[a2] - box_.lower[a2];
 
@@ -207,10 +266,18 @@ void EulerSolver::sweep(int axis, double dt) {
   const int blocks1 =
       static_cast<int>((static_cast<std::size_t>(lines1) + lane_width - 1) / lane_width);
 
-  double leaving[kVariables] = {};  // an array, for the OpenMP reduction
+  // The pencil slots of the x, y, z momenta (pencil_io.cpp rotates them).
+  CrossingTimeRequest crossing{};
+  for (int b = 0; b < 3; ++b) {
+    crossing.slot[static_cast<std::size_t>(b)] = 1 + static_cast<std::size_t>((b - axis + 3) % 3);
+    crossing.inv_spacing[static_cast<std::size_t>(b)] = 1.0 / g.spacing()[b];
+    crossing.active[static_cast<std::size_t>(b)] = g.is_active(b);
+  }
+  double leaving[2][kVariables] = {};  // arrays, for the OpenMP reduction
   std::optional<std::pair<grid::Index3, BadCell>> bad;
-  const long long work = static_cast<long long>(last - first) * lines1 * lines2;
-#pragma omp parallel reduction(+ : leaving[:kVariables]) if (work >= kParallelCells)
+  const long long work =
+      static_cast<long long>(last[sweeps - 1] - first[sweeps - 1]) * lines1 * lines2;
+#pragma omp parallel reduction(+ : leaving[:2][:kVariables]) reduction(min : fastest) if (work >= kParallelCells)
   {
     Pencil& pencil = pencils_[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for collapse(2) schedule(static)
@@ -224,10 +291,13 @@ void EulerSolver::sweep(int axis, double dt) {
         const PencilBlock block{axis,        g.cell_index(origin),
                                 stride,      static_cast<std::size_t>(n[axis]),
                                 lane_stride, lanes};
-        gather(state_, block, faces, first, last, pencil);
-        EndFluxes ends;
+        const BlockTransfer t1{state_, block, faces, first[0], last[0], only_material_};
+        const BlockTransfer t2{state_, block, faces, first[1], last[1], only_material_};
+        std::array<EndFluxes, 2> ends;
+        const CrossingTimeRequest* asked = last_of_step ? &crossing : nullptr;
         const auto problem =
-            sweep_pencil(pencil, lanes, first + kGhost, last + kGhost, step, eos_, ends);
+            twice ? sweep_block_twice(pencil, t1, t2, step, eos_, ends, asked, &fastest)
+                  : sweep_block(pencil, t1, step, eos_, ends[0], asked, &fastest);
         if (problem) {
 #pragma omp critical(mpfd_fdm_bad_cell)
           if (!bad) {
@@ -238,14 +308,14 @@ void EulerSolver::sweep(int axis, double dt) {
           }
           continue;
         }
-        scatter(pencil, block, first, last, state_);
         // Momentum slots are rotated in the pencil; map them back to x, y, z.
-        for (std::size_t s = 0; s < kVariables; ++s) {
-          std::size_t v = s;
-          if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
-          if (at_lower) leaving[v] -= ends.lower[s] * face_area;
-          if (at_upper) leaving[v] += ends.upper[s] * face_area;
-        }
+        for (int k = 0; k < sweeps; ++k)
+          for (std::size_t s = 0; s < kVariables; ++s) {
+            std::size_t v = s;
+            if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
+            if (at_lower[k]) leaving[k][v] -= ends[k].lower[s] * face_area;
+            if (at_upper[k]) leaving[k][v] += ends[k].upper[s] * face_area;
+          }
       }
   }
   if (bad) {
@@ -258,11 +328,15 @@ void EulerSolver::sweep(int axis, double dt) {
                 std::to_string(value.pressure) +
                 " Pa; both must stay positive. Reduce time.cfl or refine the grid.");
   }
-  for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[v];
-  count_quiet_faces(axis, dt, at_lower, at_upper);
-  // A cell-update is one cell advanced by one whole step: a share of the
-  // step's sweeps.
-  cell_updates_ += static_cast<double>(last - first) * lines1 * lines2 / (2.0 * g.dimension());
+  for (int k = 0; k < sweeps; ++k) {
+    for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[k][v];
+    count_quiet_faces(axis, dt, at_lower[k], at_upper[k]);
+    // A cell-update is one cell advanced by one whole step: a share of the
+    // step's sweeps.
+    cell_updates_ +=
+        static_cast<double>(last[k] - first[k]) * lines1 * lines2 / (2.0 * g.dimension());
+  }
+  return fastest;
 }
 
 void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, bool upper_updated) {
@@ -319,6 +393,7 @@ void EulerSolver::update_materials() {
 
 EulerState& EulerSolver::state_for_update(const ActiveBox& region) {
   if (region.empty()) return state_;
+  limit_after_step_.reset();
   if (box_.empty()) {
     box_ = region;
   } else {
@@ -354,6 +429,7 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
   time_ = time;
   steps_ = steps;
   outflow_ = outflow;
+  limit_after_step_.reset();
   // Exactness over speed: every cell is updated from here on (skip_quiet would
   // need the still region, which a checkpoint does not record).
   box_ = whole_grid(state_.grid);

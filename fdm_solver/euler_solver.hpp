@@ -83,10 +83,18 @@ class EulerSolver {
   [[nodiscard]] const Totals& outflow() const { return outflow_; }
 
  private:
-  void sweep(int axis, double dt);
+  /// One sweep, or two in a row along `axis` (twice); the last of a step
+  /// also returns the smallest crossing time of the cells it updated (+inf
+  /// if none).
+  double sweep(int axis, double dt, bool twice, bool last_of_step);
   /// Adds what crossed the faces normal to `axis` at still boundary cells.
   void count_quiet_faces(int axis, double dt, bool lower_updated, bool upper_updated);
-  [[nodiscard]] double line_limit(std::size_t start) const;
+  /// min of dx_a / (|u_a| + c) over active axes a and the cells [from, to)
+  /// of the x-line that starts at cell `start` [s].
+  [[nodiscard]] double line_limit(std::size_t start, int from, int to) const;
+  /// The same minimum over the cells outside the disturbed box (still, so
+  /// per line from the start where a whole line is outside) [s].
+  [[nodiscard]] double still_limit() const;
   /// Cell pressures from the tracer closure; mixed cells get their fitted EOS.
   void update_materials();
 
@@ -97,7 +105,11 @@ class EulerSolver {
   ActiveBox box_;
   std::vector<Pencil> pencils_;             // one per thread
   std::vector<double> initial_line_limit_;  // min dx/(|u|+c) of each x-line at the start
-  QuietFaceFlux quiet_flux_;                // through faces of still boundary cells
+  // min dx/(|u|+c) over the grid after the last step, found in its last
+  // sweep; empty where unknown (before a step, after writes from outside).
+  std::optional<double> limit_after_step_;
+  std::optional<std::uint8_t> only_material_;  // of every cell, this step, if one
+  QuietFaceFlux quiet_flux_;                   // through faces of still boundary cells
   std::optional<MultiMaterialTracker> tracker_;
   TracerBoundaries tracer_faces_{};
   std::array<std::vector<double>, 3> velocity_;  // scratch for tracer advection

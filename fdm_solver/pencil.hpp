@@ -23,14 +23,16 @@ enum PencilVariable : std::size_t { kRho = 0, kMn, kMt1, kMt2, kE };
 inline constexpr std::size_t kMaxLanes = 16;
 
 struct Pencil {
-  std::array<std::vector<double>, 5> u;          ///< state; updated in place
+  std::array<std::vector<double>, 5> u;          ///< state at the start of the sweep
+  std::array<std::vector<double>, 5> u_new;      ///< state at its end
   std::array<std::vector<double>, 5> ubar;       ///< state plus artificial viscosity, T (2-56)
-  std::array<std::vector<double>, 5> flux;       ///< flux of ubar, then of the half-step state
-  std::array<std::vector<double>, 5> half;       ///< Richtmyer half-step state at face i+1/2
+  std::array<std::vector<double>, 5> flux_bar;   ///< flux of ubar
+  std::array<std::vector<double>, 5> flux;       ///< flux of the half-step state at face i+1/2
   std::array<std::vector<double>, 5> diffusion;  ///< viscous exchange across face i+1/2
-  std::vector<double> pressure;
-  std::vector<double> sound_speed;
-  std::vector<double> theta;  ///< shock switch, T (2-57)
+  std::vector<double> pressure;                  ///< of u
+  std::vector<double> sound_speed;               ///< of u
+  std::vector<double> pressure_bar;              ///< of ubar
+  std::vector<double> theta;                     ///< shock switch, T (2-57)
   std::vector<std::uint8_t> material;
   std::vector<double> mix_gamma;  ///< stiffened-gas gamma where material is kMixedMaterial
   std::vector<double> mix_pinf;   ///< stiffened-gas pi [Pa], same

@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "common/config/scene.hpp"
 #include "fdm_solver/euler_state.hpp"
@@ -37,14 +39,36 @@ struct AxisBoundaries {
   config::BoundaryKind upper;
 };
 
-/// Copies cells [first, last) of every lane plus kGhost neighbours on each
-/// side (made from the boundary conditions where the lines end) into the
-/// pencil; pencil position = cell position + kGhost.
-void gather(const EulerState& state, const PencilBlock& block, AxisBoundaries faces,
-            std::size_t first, std::size_t last, Pencil& pencil);
+/// Where a sweep reads and writes: the state, the block of lines in it and
+/// the boundary conditions of the two faces it meets. `state` is read ahead of
+/// the update and written behind it (other threads hold other lines).
+struct BlockTransfer {
+  EulerState& state;
+  PencilBlock block;
+  AxisBoundaries faces;
+  std::size_t first;  ///< first updated cell along the axis
+  std::size_t last;   ///< one past the last updated cell
+  /// The material of every cell of the grid, if they share one (no mixed
+  /// cells): the block's materials need not be gathered.
+  std::optional<std::uint8_t> only_material;
+};
 
-/// Copies the pencil's cells [first, last) of every lane back into the state.
-void scatter(const Pencil& pencil, const PencilBlock& block, std::size_t first, std::size_t last,
-             EulerState& state);
+/// Copies the material (and mixed cells' EOS) of cells [first - kGhost,
+/// last + kGhost) of every lane into the pencil, ghosts made from the
+/// boundary conditions where the lines end; pencil position = cell + kGhost.
+void gather_materials(const BlockTransfer& t, Pencil& pencil);
+
+/// Copies the state of pencil positions [from, to) into pencil.u, within the
+/// stencil [first, last + 2 kGhost), making the ghosts of a domain face from
+/// the cells the range has copied. Called with consecutive ranges from
+/// `first`, so that each ghost's source is copied when it is made.
+void gather_rows(const BlockTransfer& t, std::size_t from, std::size_t to, Pencil& pencil);
+
+/// Makes the ghosts of the domain faces that t's stencil reaches again from
+/// the cells in pencil.u (after they have changed).
+void remake_ghosts(const BlockTransfer& t, Pencil& pencil);
+
+/// Copies pencil.u_new at positions [from, to) (updated cells) back into the state.
+void scatter_rows(const Pencil& pencil, const BlockTransfer& t, std::size_t from, std::size_t to);
 
 }  // namespace mpfd::fdm

@@ -13,7 +13,11 @@
 //     the flux Jacobian), second order in space and time:
 //       U_{i+1/2} = (Ubar_i + Ubar_{i+1})/2 - dt/(2dx) (F(Ubar_{i+1}) - F(Ubar_i))
 //       U_i^new   = Ubar_i - dt/dx (F(U_{i+1/2}) - F(U_{i-1/2})).
-// Pure functions of the pencil: no allocation, no I/O, no globals.
+// The stages run in chunks of a few positions, each stage lagging the one it
+// reads by its stencil reach, so that a chunk's working set stays in cache;
+// the state is read a few positions ahead of the update and written behind
+// it. The EOS is resolved once per block when its cells share one material,
+// and inlined. No allocation, no I/O, no globals.
 
 #include <array>
 #include <cstddef>
@@ -22,6 +26,7 @@
 
 #include "common/eos/any_eos.hpp"
 #include "fdm_solver/pencil.hpp"
+#include "fdm_solver/pencil_io.hpp"
 
 namespace mpfd::fdm {
 
@@ -33,7 +38,7 @@ struct SweepStep {
 
 /// A cell whose state is not physical (density or pressure not > 0, or not finite).
 struct BadCell {
-  std::size_t position;  ///< position along the pencil
+  std::size_t position;  ///< position along the pencil (cell + kGhost)
   std::size_t lane;      ///< lane of the block
   double density;
   double pressure;
@@ -46,26 +51,57 @@ struct EndFluxes {
   std::array<double, 5> upper{};
 };
 
-/// The equation of state of every buffer entry: the model of its material,
-/// or its own stiffened gas where the material is kMixedMaterial.
-struct EosView {
-  std::span<const eos::AnyEos> models;
-  const std::uint8_t* material;
-  const double* mix_gamma;
-  const double* mix_pinf;
+/// Asks a sweep for the smallest crossing time dx_a / (|u_a| + c) over its
+/// updated cells and active axes a, at their new state (the stable dt of the
+/// next step, computed while the cells are in cache).
+struct CrossingTimeRequest {
+  std::array<std::size_t, 3> slot;    ///< pencil slot holding the x, y, z momentum
+  std::array<double, 3> inv_spacing;  ///< 1/dx, 1/dy, 1/dz [1/m]
+  std::array<bool, 3> active;         ///< axes that count
 };
 
-/// Updates positions [first, last) of every lane in place (position = cell +
-/// kGhost). The pencil must hold valid states on [first - 3, last + 3).
-/// Returns the first unphysical cell met in [first, last) before the
-/// update, if any (the pencil is then left unchanged).
-std::optional<BadCell> sweep_pencil(Pencil& pencil, std::size_t lanes, std::size_t first,
-                                    std::size_t last, const SweepStep& step,
-                                    std::span<const eos::AnyEos> models, EndFluxes& ends);
+/// Updates cells [t.first, t.last) of every lane of the block in the state,
+/// through the pencil (gathered and scattered a few positions at a time).
+/// Returns the first unphysical cell met in [first, last) before its
+/// update, if any (cells before it may have been updated: the caller stops).
+/// With `crossing` set, `min_crossing_time` is lowered to the smallest
+/// crossing time of the updated cells.
+std::optional<BadCell> sweep_block(Pencil& pencil, const BlockTransfer& t, const SweepStep& step,
+                                   std::span<const eos::AnyEos> models, EndFluxes& ends,
+                                   const CrossingTimeRequest* crossing = nullptr,
+                                   double* min_crossing_time = nullptr);
 
-/// Pressure of buffer entries [first, last) from the rotated state, and their
-/// sound speed too unless `sound_speed` is null.
-void compute_pressure(const EosView& eos, const std::array<std::vector<double>, 5>& u,
-                      double* pressure, double* sound_speed, std::size_t first, std::size_t last);
+/// Two sweeps in a row along one axis over the same lines (the x x of
+/// (2-52)): t1 and t2 differ only in the range of updated cells, t2's holding
+/// t1's. The lines are gathered and scattered once; ends[0] and ends[1] get
+/// what crossed the ends of each sweep's range. The same bits as two
+/// sweep_block calls.
+std::optional<BadCell> sweep_block_twice(Pencil& pencil, const BlockTransfer& t1,
+                                         const BlockTransfer& t2, const SweepStep& step,
+                                         std::span<const eos::AnyEos> models,
+                                         std::array<EndFluxes, 2>& ends,
+                                         const CrossingTimeRequest* crossing = nullptr,
+                                         double* min_crossing_time = nullptr);
+
+/// sweep_block and sweep_block_twice built for one instruction set: the
+/// x86-64 baseline (SSE2) and, where the compiler targets x86-64, AVX2
+/// without FMA (so that both give the same bits). The functions above call
+/// the widest one the processor has.
+#define MPFD_DECLARE_SWEEP_BLOCK                                                                 \
+  std::optional<BadCell> sweep_block(Pencil& pencil, const BlockTransfer& t,                     \
+                                     const SweepStep& step, std::span<const eos::AnyEos> models, \
+                                     EndFluxes& ends, const CrossingTimeRequest* crossing,       \
+                                     double* min_crossing_time);                                 \
+  std::optional<BadCell> sweep_block_twice(                                                      \
+      Pencil& pencil, const BlockTransfer& t1, const BlockTransfer& t2, const SweepStep& step,   \
+      std::span<const eos::AnyEos> models, std::array<EndFluxes, 2>& ends,                       \
+      const CrossingTimeRequest* crossing, double* min_crossing_time);
+namespace isa_baseline {
+MPFD_DECLARE_SWEEP_BLOCK
+}
+namespace isa_avx2 {
+MPFD_DECLARE_SWEEP_BLOCK
+}
+#undef MPFD_DECLARE_SWEEP_BLOCK
 
 }  // namespace mpfd::fdm
