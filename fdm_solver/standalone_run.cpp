@@ -19,6 +19,7 @@
 #include "fdm_solver/cell_eos.hpp"
 #include "fdm_solver/primitive_fields.hpp"
 #include "fdm_solver/snapshot_fields.hpp"
+#include "fdm_solver/sweep_kernel.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -117,6 +118,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_detail("peak_memory_bytes_per_cell", static_cast<double>(peak_memory_bytes()) /
                                                          static_cast<double>(grid.cell_count()));
     summary.set_detail("solver_time_s", solver_seconds);
+    summary.set_detail("sweep_kernel", sweep_kernel_name());
     summary.set_detail("cell_updates", solver.cell_updates());
     summary.set_status(status, error);
     summary.write(options.out_dir / "summary.json");

@@ -1,7 +1,17 @@
+#include <cstdlib>
+#include <string_view>
+
 #include "fdm_solver/sweep_kernel.hpp"
 
 namespace mpfd::fdm {
 namespace {
+
+// MPFD_FDM_KERNEL=baseline forces the SSE2 build of the kernel on any CPU, so
+// that path is tested (and can be compared) on machines that have AVX2.
+bool baseline_forced() {
+  const char* choice = std::getenv("MPFD_FDM_KERNEL");
+  return choice != nullptr && std::string_view(choice) == "baseline";
+}
 
 bool processor_has_avx2() {
 #if MPFD_SWEEP_AVX2
@@ -13,9 +23,13 @@ bool processor_has_avx2() {
 }
 
 // Measured on the 128^3 blast: 1.5x the baseline's cell-updates/s.
-const bool use_avx2 = processor_has_avx2();
+const bool use_avx2 = !baseline_forced() && processor_has_avx2();
 
 }  // namespace
+
+const char* sweep_kernel_name() noexcept {
+  return use_avx2 ? "avx2" : "baseline";
+}
 
 std::optional<BadCell> sweep_block(Pencil& pencil, const BlockTransfer& t, const SweepStep& step,
                                    std::span<const eos::AnyEos> models, EndFluxes& ends,

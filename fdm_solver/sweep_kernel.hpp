@@ -60,6 +60,10 @@ struct CrossingTimeRequest {
   std::array<bool, 3> active;         ///< axes that count
 };
 
+/// The build of the sweep kernel in use: "avx2" or "baseline" (SSE2); set
+/// once per process from the CPU, or "baseline" with MPFD_FDM_KERNEL=baseline.
+[[nodiscard]] const char* sweep_kernel_name() noexcept;
+
 /// Updates cells [t.first, t.last) of every lane of the block in the state,
 /// through the pencil (gathered and scattered a few positions at a time).
 /// Returns the first unphysical cell met in [first, last) before its
