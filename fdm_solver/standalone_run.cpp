@@ -1,7 +1,5 @@
 #include "fdm_solver/standalone_run.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,11 +9,11 @@
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
-#include "common/core/progress.hpp"
 #include "common/io/gauge_recorder.hpp"
 #include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "common/io/snapshot_writer.hpp"
+#include "common/io/standalone_loop.hpp"
 #include "fdm_solver/cell_eos.hpp"
 #include "fdm_solver/primitive_fields.hpp"
 #include "fdm_solver/snapshot_fields.hpp"
@@ -25,13 +23,6 @@ namespace mpfd::fdm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Peak resident memory of this process so far [bytes].
-long long peak_memory_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return 1024LL * usage.ru_maxrss;  // Linux reports kilobytes
-}
 
 constexpr const char* kAuditName[kVariables] = {"mass", "momentum_x", "momentum_y", "momentum_z",
                                                 "energy"};
@@ -114,8 +105,8 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_rate("cell_updates_per_second",
                      solver_seconds > 0 ? solver.cell_updates() / solver_seconds : 0.0);
     summary.set_detail("cells", grid.cell_count());
-    summary.set_detail("peak_memory_bytes", peak_memory_bytes());
-    summary.set_detail("peak_memory_bytes_per_cell", static_cast<double>(peak_memory_bytes()) /
+    summary.set_detail("peak_memory_bytes", io::peak_memory_bytes());
+    summary.set_detail("peak_memory_bytes_per_cell", static_cast<double>(io::peak_memory_bytes()) /
                                                          static_cast<double>(grid.cell_count()));
     summary.set_detail("solver_time_s", solver_seconds);
     summary.set_detail("sweep_kernel", sweep_kernel_name());
@@ -140,43 +131,13 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     write_summary("running", "");
   };
 
-  try {
-    ProgressLine progress(std::cerr, scene.time.end, "fdm");
-    const double end = scene.time.end;
-    double next_output = 0.0;
-    double next_gauge = 0.0;
-    while (true) {
-      if (!gauge_cells.empty() && (!scene.output.gauge_interval || solver.time() >= next_gauge)) {
-        record_gauges();
-        if (scene.output.gauge_interval)
-          while (next_gauge <= solver.time()) next_gauge += *scene.output.gauge_interval;
-      }
-      if (solver.time() >= next_output || solver.time() >= end) {
-        write_output();
-        while (next_output <= solver.time()) next_output += scene.output.interval;
-      }
-      if (solver.time() >= end) break;
-      if (solver.steps() >= scene.time.max_steps)
-        throw Error("fdm_solver: reached time.max_steps = " + std::to_string(scene.time.max_steps) +
-                    " at t = " + std::to_string(solver.time()) + " s of " + std::to_string(end) +
-                    " s; raise time.max_steps or coarsen the grid");
-      const double dt = solver.step_toward(std::min(next_output, end));  // land on output times
-      const auto step_start = Clock::now();
-      solver.advance(dt);
-      solver_seconds += std::chrono::duration<double>(Clock::now() - step_start).count();
-      progress.update(solver.steps(), solver.time());
-    }
-    progress.finish(solver.steps(), solver.time());
-    write_summary("completed", "");
-  } catch (const std::exception& e) {
-    // Keep what was recorded, but never let a second failure hide the first.
-    try {
-      gauges.flush();
-      write_summary("failed", e.what());
-    } catch (const std::exception&) {
-    }
-    throw;
-  }
+  io::StandaloneCallbacks callbacks;
+  callbacks.has_gauges = !gauge_cells.empty();
+  callbacks.record_gauges = record_gauges;
+  callbacks.write_output = write_output;
+  callbacks.flush_gauges = [&] { gauges.flush(); };
+  callbacks.write_summary = write_summary;
+  io::run_standalone_loop(solver, scene, "fdm_solver", "fdm", callbacks, solver_seconds);
   logger.info("'", scene.name, "' done: ", solver.steps(), " steps to t = ", solver.time(), " s, ",
               solver.cell_updates() / std::max(solver_seconds, 1e-12) / 1e6,
               " M cell-updates/s; output in ", options.out_dir.string());

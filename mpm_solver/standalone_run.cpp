@@ -1,7 +1,5 @@
 #include "mpm_solver/standalone_run.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,11 +9,11 @@
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
-#include "common/core/progress.hpp"
 #include "common/io/gauge_recorder.hpp"
 #include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "common/io/snapshot_writer.hpp"
+#include "common/io/standalone_loop.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/snapshot_particles.hpp"
 
@@ -23,13 +21,6 @@ namespace mpfd::mpm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Peak resident memory of this process so far [bytes].
-long long peak_memory_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return 1024LL * usage.ru_maxrss;  // Linux reports kilobytes
-}
 
 /// Index of the particle nearest to x (a gauge is an Eulerian point).
 std::size_t nearest_particle(const ParticleSet& ps, const grid::Vec3& x) {
@@ -125,7 +116,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_detail("shape_function", shape_function_name(solver.settings().shape_function));
     summary.set_detail("update",
                        solver.settings().update == config::MpmUpdate::musl ? "musl" : "usl");
-    summary.set_detail("peak_memory_bytes", peak_memory_bytes());
+    summary.set_detail("peak_memory_bytes", io::peak_memory_bytes());
     summary.set_detail("solver_time_s", solver_seconds);
     summary.set_detail("particle_updates", solver.particle_updates());
     summary.set_status(status, error);
@@ -137,43 +128,13 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     write_summary("running", "");
   };
 
-  try {
-    ProgressLine progress(std::cerr, scene.time.end, "mpm");
-    const double end = scene.time.end;
-    double next_output = 0.0;
-    double next_gauge = 0.0;
-    while (true) {
-      if (!points.empty() && (!scene.output.gauge_interval || solver.time() >= next_gauge)) {
-        record_gauges();
-        if (scene.output.gauge_interval)
-          while (next_gauge <= solver.time()) next_gauge += *scene.output.gauge_interval;
-      }
-      if (solver.time() >= next_output || solver.time() >= end) {
-        write_output();
-        while (next_output <= solver.time()) next_output += scene.output.interval;
-      }
-      if (solver.time() >= end) break;
-      if (solver.steps() >= scene.time.max_steps)
-        throw Error("mpm_solver: reached time.max_steps = " + std::to_string(scene.time.max_steps) +
-                    " at t = " + std::to_string(solver.time()) + " s of " + std::to_string(end) +
-                    " s; raise time.max_steps or coarsen the grid");
-      const double dt = solver.step_toward(std::min(next_output, end));  // land on output times
-      const auto step_start = Clock::now();
-      solver.advance(dt);
-      solver_seconds += std::chrono::duration<double>(Clock::now() - step_start).count();
-      progress.update(solver.steps(), solver.time());
-    }
-    progress.finish(solver.steps(), solver.time());
-    write_summary("completed", "");
-  } catch (const std::exception& e) {
-    // Keep what was recorded, but never let a second failure hide the first.
-    try {
-      gauges.flush();
-      write_summary("failed", e.what());
-    } catch (const std::exception&) {
-    }
-    throw;
-  }
+  io::StandaloneCallbacks callbacks;
+  callbacks.has_gauges = !points.empty();
+  callbacks.record_gauges = record_gauges;
+  callbacks.write_output = write_output;
+  callbacks.flush_gauges = [&] { gauges.flush(); };
+  callbacks.write_summary = write_summary;
+  io::run_standalone_loop(solver, scene, "mpm_solver", "mpm", callbacks, solver_seconds);
   logger.info("'", scene.name, "' done: ", solver.steps(), " steps to t = ", solver.time(), " s, ",
               solver.particle_updates() / std::max(solver_seconds, 1e-12) / 1e6,
               " M particle-updates/s; output in ", options.out_dir.string());
