@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -16,11 +16,12 @@ std::string index_text(const Values& values) {
 
 [[noreturn]] void reject(const cosim::v1::Region& region, const grid::UniformGrid& grid,
                          const std::string& rule) {
-  throw ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
-                      "Setup region '" + region.name() + "' (box lo " +
-                          index_text(region.box().lo()) + ", hi " + index_text(region.box().hi()) +
-                          "): " + rule + "; the grid's interior cells are [0, 0, 0] to " +
-                          index_text(grid.cells()) + " (exclusive)");
+  throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+                             "Setup region '" + region.name() + "' (box lo " +
+                                 index_text(region.box().lo()) + ", hi " +
+                                 index_text(region.box().hi()) + "): " + rule +
+                                 "; the grid's interior cells are [0, 0, 0] to " +
+                                 index_text(grid.cells()) + " (exclusive)");
 }
 
 }  // namespace

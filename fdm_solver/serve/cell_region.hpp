@@ -26,7 +26,7 @@ struct CellRegion {
 /// Checks a Setup region against `grid`: kind CELLS, a box of 1 to 3 axes
 /// (axes it leaves out must have one cell) with 0 <= lo < hi <= cells, and
 /// known quantities (none given: rho, momentum, E). Throws
-/// ProtocolError{UNKNOWN_REGION} naming the region, its box and the grid.
+/// cosim::ProtocolError{UNKNOWN_REGION} naming the region, its box and the grid.
 [[nodiscard]] CellRegion make_cell_region(const cosim::v1::Region& region,
                                           const grid::UniformGrid& grid);
 

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "common/core/log.hpp"
+#include "cosim/serving/protocol_error.hpp"
+#include "cosim/serving/sha256.hpp"
 #include "fdm_solver/serve/checkpoint_file.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
-#include "fdm_solver/serve/sha256.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 [[noreturn]] void refuse(const std::string& text) {
-  throw ProtocolError(cosim::v1::ERROR_CODE_IO, text, false);
+  throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, text, false);
 }
 
 /// `requested` resolved against Setup.output_dir; an empty one is output_dir.
@@ -57,7 +57,7 @@ void verify_digest(const fs::path& file) {
   if (!(in >> recorded))
     refuse("Restore: '" + file.string() + "' has no readable '" + sidecar.string() +
            "' beside it (Checkpoint writes one) to check it against");
-  const std::string actual = sha256_hex_of_file(file);
+  const std::string actual = cosim::sha256_hex_of_file(file);
   if (actual != recorded)
     refuse("Restore: '" + file.string() + "' (" + std::to_string(fs::file_size(file)) +
            " bytes) has SHA-256 " + actual + "; '" + sidecar.string() + "' records " + recorded +
@@ -83,7 +83,7 @@ cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
     try {
       write_checkpoint_file(partial, zone);  // closed on return: then complete
       written.set_bytes(static_cast<std::uint64_t>(fs::file_size(partial)));
-      written.set_sha256(sha256_hex_of_file(partial));
+      written.set_sha256(cosim::sha256_hex_of_file(partial));
       write_sidecar(partial_sidecar, written.sha256(), file);
       fs::rename(partial_sidecar, sidecar);
       fs::rename(partial, file);  // last: a checkpoint in place is complete
@@ -114,7 +114,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
                 "match, so the state is restored");
     zone.solver.restore(back.state, back.solver_time, back.steps, back.outflow,
                         std::move(back.tracker));  // checks before it changes anything
-  } catch (const ProtocolError&) {
+  } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {
     refuse("Restore from '" + file.string() + "' failed: " + error.what());

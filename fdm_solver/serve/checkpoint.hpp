@@ -13,7 +13,7 @@ namespace mpfd::fdm {
 /// in it, NNNNNN the step; empty: Setup.output_dir/checkpoints/; relative:
 /// under Setup.output_dir), and `<file>.sha256` (sha256sum's format) beside
 /// it; both are written under temporary names and renamed into place, the
-/// checkpoint last. Throws a non-fatal ProtocolError{IO} — the state is
+/// checkpoint last. Throws a non-fatal cosim::ProtocolError{IO} — the state is
 /// untouched and no partial file is left — when a file cannot be written.
 [[nodiscard]] cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
                                                             const cosim::v1::Checkpoint& request);
@@ -22,7 +22,7 @@ namespace mpfd::fdm {
 /// which then continues bit for bit as the run that wrote it. Everything is
 /// checked before the state is touched: the file's SHA-256 against
 /// `<file>.sha256`, then its contents (checkpoint_file.hpp). A non-fatal
-/// ProtocolError{IO} names the file and what mismatched.
+/// cosim::ProtocolError{IO} names the file and what mismatched.
 [[nodiscard]] cosim::v1::Restored restore_checkpoint(ServedZone& zone,
                                                      const cosim::v1::Restore& request);
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "common/io/hdf5_file.hpp"
+#include "cosim/serving/checkpoint_reader.hpp"
 #include "fdm_solver/mixture_eos.hpp"
-#include "fdm_solver/serve/checkpoint_reader.hpp"
 #include "fdm_solver/serve/tracker_checkpoint.hpp"
 
 namespace mpfd::fdm {
@@ -38,7 +38,7 @@ std::vector<std::size_t> cell_shape(const grid::UniformGrid& grid) {
           static_cast<std::size_t>(n[0])};
 }
 
-void check_header(const CheckpointReader& in, const ServedZone& zone) {
+void check_header(const cosim::CheckpointReader& in, const ServedZone& zone) {
   const io::Hdf5File& h5 = in.file();
   const std::string format = h5.read_string_attribute("/", "format");
   if (format != kCheckpointFormat)
@@ -105,7 +105,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
 
 CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone,
                                         std::uint64_t step) {
-  const CheckpointReader in(file);
+  const cosim::CheckpointReader in(file);
   const io::Hdf5File& h5 = in.file();
   check_header(in, zone);
 

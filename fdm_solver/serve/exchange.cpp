@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "common/core/require.hpp"
+#include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/gauge_sampler.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
 #include "fdm_solver/serve/region_transfer.hpp"
 
 namespace mpfd::fdm {
@@ -16,20 +16,21 @@ namespace {
 cosim::v1::AdvanceResult advance(ServedZone& zone, const cosim::v1::Advance& op) {
   const double dt = op.dt();
   if (!(dt > 0.0) || !std::isfinite(dt))
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                        "Advance dt must be positive and finite, got " + shortest_text(dt) + " s");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "Advance dt must be positive and finite, got " + shortest_text(dt) + " s");
   const double now = zone.time();
   if (std::abs(op.time() - now) >
       kTimeTolerance * std::max({std::abs(op.time()), std::abs(now), dt}))
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "Advance from time " + shortest_text(op.time()) +
-                            " s, but the solver is at " + shortest_text(now) + " s (after " +
-                            std::to_string(zone.solver.steps()) + " steps)");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                               "Advance from time " + shortest_text(op.time()) +
+                                   " s, but the solver is at " + shortest_text(now) + " s (after " +
+                                   std::to_string(zone.solver.steps()) + " steps)");
   const auto start = std::chrono::steady_clock::now();
   try {
     zone.solver.advance(dt);
   } catch (const Error& error) {
-    throw ProtocolError(cosim::v1::ERROR_CODE_NUMERICAL, error.what());
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_NUMERICAL, error.what());
   }
   cosim::v1::AdvanceResult result;
   result.set_time(zone.time());
@@ -71,14 +72,15 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
         break;
       case cosim::v1::Operation::kInject:
       case cosim::v1::Operation::kRemove:
-        throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                            "Exchange operation " + std::to_string(results.results_size()) +
-                                ": InjectParticles and RemoveParticles are for MPM zones, not "
-                                "fdm_solver");
+        throw cosim::ProtocolError(
+            cosim::v1::ERROR_CODE_UNEXPECTED,
+            "Exchange operation " + std::to_string(results.results_size()) +
+                ": InjectParticles and RemoveParticles are for MPM zones, not "
+                "fdm_solver");
       case cosim::v1::Operation::OP_NOT_SET:
-        throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                            "Exchange operation " + std::to_string(results.results_size()) +
-                                " has no operation set");
+        throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                                   "Exchange operation " + std::to_string(results.results_size()) +
+                                       " has no operation set");
     }
   }
   return reply;

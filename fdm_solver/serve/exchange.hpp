@@ -13,7 +13,7 @@ inline constexpr double kTimeTolerance = 1e-9;
 
 /// Runs ApplyRegion, ExportRegion, Advance, ProposeDt and SampleGauges in the
 /// order given; returns the ExchangeResult with the exported and sampled
-/// arrays. Throws ProtocolError: UNKNOWN_REGION, MALFORMED, UNEXPECTED (a
+/// arrays. Throws cosim::ProtocolError: UNKNOWN_REGION, MALFORMED, UNEXPECTED (a
 /// particle operation, or Advance from another time than the solver's) or
 /// NUMERICAL (the solver broke down; its message).
 [[nodiscard]] cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request);

@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "cosim/arrays.hpp"
+#include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/cell_quantities.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -29,8 +29,8 @@ std::optional<GaugeQuantity> parse_gauge_quantity(std::string_view name) {
 }
 
 [[noreturn]] void reject(const cosim::v1::SampleGauges& request, const std::string& rule) {
-  throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                      "SampleGauges group '" + request.group() + "': " + rule);
+  throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                             "SampleGauges group '" + request.group() + "': " + rule);
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace mpfd::fdm {
 /// `reply`; returns n_gauges. Quantities: rho, E, pressure and the components
 /// momentum_x, ..., velocity_z. `positions` holds d = 1, 2 or 3 coordinates
 /// (x[, y[, z]]) per gauge; an axis left out must have one cell. Throws
-/// ProtocolError{MALFORMED} naming the gauge, position or quantity.
+/// cosim::ProtocolError{MALFORMED} naming the gauge, position or quantity.
 std::uint64_t sample_gauges(const EulerSolver& solver, const cosim::v1::SampleGauges& request,
                             cosim::Message& reply);
 

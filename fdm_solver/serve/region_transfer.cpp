@@ -4,14 +4,14 @@
 #include <cstring>
 
 #include "cosim/arrays.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::fdm {
 namespace {
 
 [[noreturn]] void reject(cosim::v1::ErrorCode code, const CellRegion& region,
                          std::string_view quantity, const std::string& rule) {
-  throw ProtocolError(
+  throw cosim::ProtocolError(
       code, "region '" + region.name + "', quantity '" + std::string(quantity) + "': " + rule);
 }
 
@@ -48,15 +48,16 @@ Quantity checked_apply_array(const CellRegion& region, const cosim::v1::ArrayDes
 void apply_region(EulerSolver& solver, const CellRegion& region, cosim::v1::ApplyRegion::Mode mode,
                   const cosim::Message& request) {
   if (mode != cosim::v1::ApplyRegion::MODE_SET && mode != cosim::v1::ApplyRegion::MODE_ADD)
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, "ApplyRegion on region '" + region.name +
-                                                             "' needs mode MODE_SET or MODE_ADD");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "ApplyRegion on region '" + region.name + "' needs mode MODE_SET or MODE_ADD");
   unsigned seen = 0;
   for (const auto& array : request.header.arrays())
     if (array.group() == region.name) checked_apply_array(region, array, seen);
   if (seen == 0)
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, "ApplyRegion on region '" + region.name +
-                                                             "' carries no array of group '" +
-                                                             region.name + "'");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                               "ApplyRegion on region '" + region.name +
+                                   "' carries no array of group '" + region.name + "'");
 
   EulerState& state = solver.state_for_update(region.box);
   for (const auto& array : request.header.arrays()) {

@@ -15,14 +15,14 @@ namespace mpfd::fdm {
 /// of group region.name in `request`, written through state_for_update. All
 /// arrays are checked before any is written: each must be a writable quantity
 /// the region declares, given once, F64, with cells x components values.
-/// Throws ProtocolError{MALFORMED or UNKNOWN_REGION} naming region, quantity,
+/// Throws cosim::ProtocolError{MALFORMED or UNKNOWN_REGION} naming region, quantity,
 /// expected and got.
 void apply_region(EulerSolver& solver, const CellRegion& region, cosim::v1::ApplyRegion::Mode mode,
                   const cosim::Message& request);
 
 /// Appends one array per asked quantity (none asked: the region's) to `reply`,
 /// each copied once from the state into its frame. Returns the cell count.
-/// Throws ProtocolError{UNKNOWN_REGION} for a quantity the region does not declare.
+/// Throws cosim::ProtocolError{UNKNOWN_REGION} for a quantity the region does not declare.
 std::uint64_t export_region(const EulerSolver& solver, const CellRegion& region,
                             const cosim::v1::ExportRegion& request, cosim::Message& reply);
 

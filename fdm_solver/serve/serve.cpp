@@ -6,9 +6,9 @@
 
 #include "common/core/log.hpp"
 #include "cosim/participant.hpp"
+#include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/checkpoint.hpp"
 #include "fdm_solver/serve/exchange.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
 #include "fdm_solver/serve/served_zone.hpp"
 
 namespace mpfd::fdm {
@@ -35,17 +35,18 @@ cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& r
   const auto& header = request.header;
   const std::string_view body = cosim::body_name(header);  // only for messages
   if (header.has_field_export() || header.has_field_chunk() || header.has_field_import_commit())
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "fdm_solver serve does not support '" + std::string(body) +
-                            "' (not in its Hello capabilities); the solver carries on",
-                        false);
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                               "fdm_solver serve does not support '" + std::string(body) +
+                                   "' (not in its Hello capabilities); the solver carries on",
+                               false);
   if (!header.has_setup() && !header.has_exchange() && !header.has_write_output() &&
       !header.has_checkpoint() && !header.has_restore() && !header.has_activate())
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "'" + std::string(body) + "' is not a request to a solver");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                               "'" + std::string(body) + "' is not a request to a solver");
   if (header.has_setup() == (zone != nullptr))
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        zone ? "a second Setup" : "'" + std::string(body) + "' before Setup");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_UNEXPECTED,
+        zone ? "a second Setup" : "'" + std::string(body) + "' before Setup");
   cosim::Message reply;
   if (header.has_setup()) {
     zone = set_up_zone(header.setup());
@@ -118,7 +119,7 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
     }
     try {
       participant.reply(request, answer(zone, request));
-    } catch (const ProtocolError& error) {
+    } catch (const cosim::ProtocolError& error) {
       report_error(participant, request, error.code(), error.what(), error.fatal());
     } catch (const std::exception& error) {
       report_error(participant, request, cosim::v1::ERROR_CODE_INTERNAL, error.what(), true);

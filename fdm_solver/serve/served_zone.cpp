@@ -3,13 +3,13 @@
 #include <cmath>
 
 #include "common/config/scene_loader.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::fdm {
 namespace {
 
 [[noreturn]] void reject(cosim::v1::ErrorCode code, const std::string& rule) {
-  throw ProtocolError(code, "Setup: " + rule);
+  throw cosim::ProtocolError(code, "Setup: " + rule);
 }
 
 config::Scene parse_fragment(const cosim::v1::Setup& setup) {
@@ -56,7 +56,7 @@ const CellRegion& ServedZone::region(const std::string& name, std::string_view o
   if (const auto found = regions.find(name); found != regions.end()) return found->second;
   std::string known;
   for (const auto& [key, value] : regions) known += (known.empty() ? "" : ", ") + key;
-  throw ProtocolError(
+  throw cosim::ProtocolError(
       cosim::v1::ERROR_CODE_UNKNOWN_REGION,
       std::string(operation) + ": region '" + name +
           "' was not declared in Setup; declared: " + (known.empty() ? "none" : known));
@@ -67,7 +67,7 @@ std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup) {
   std::unique_ptr<ServedZone> zone;
   try {
     zone = std::make_unique<ServedZone>(std::move(scene), setup);
-  } catch (const ProtocolError&) {
+  } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const Error& error) {
     reject(cosim::v1::ERROR_CODE_MALFORMED, error.what());

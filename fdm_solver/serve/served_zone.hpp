@@ -28,13 +28,13 @@ struct ServedZone {
 
   /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
   [[nodiscard]] double time() const { return start_time + solver.time(); }
-  /// The region called `name`; throws ProtocolError{UNKNOWN_REGION} listing the known ones.
+  /// The region called `name`; throws cosim::ProtocolError{UNKNOWN_REGION} listing the known ones.
   [[nodiscard]] const CellRegion& region(const std::string& name, std::string_view operation) const;
 };
 
 /// Builds the zone of a Setup: scene_fragment (the scene file's YAML or JSON
 /// text) through parse_scene, the zone's grid (if given) checked against the
-/// scene's cells, every region checked (cell_region.hpp). Throws ProtocolError.
+/// scene's cells, every region checked (cell_region.hpp). Throws cosim::ProtocolError.
 [[nodiscard]] std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup);
 
 /// SetupAck: the regions with the quantities served, and the first stable dt.

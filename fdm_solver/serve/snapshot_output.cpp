@@ -1,7 +1,7 @@
 #include "fdm_solver/serve/snapshot_output.hpp"
 
 #include "common/core/error.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/snapshot_fields.hpp"
 
 namespace mpfd::fdm {
@@ -12,7 +12,7 @@ void check_field(const std::string& name, const std::string& source) {
   try {
     check_field_name(name);
   } catch (const Error& error) {
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO, source + " " + error.what());
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, source + " " + error.what());
   }
 }
 
@@ -29,12 +29,12 @@ SnapshotOutput::SnapshotOutput(std::filesystem::path out_dir, const config::Scen
 cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double time,
                                                const cosim::v1::WriteOutput& request) {
   if (out_dir_.empty())
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput: Setup gave no output_dir");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput: Setup gave no output_dir");
   if (!request.directory().empty() && std::filesystem::path(request.directory()) != out_dir_)
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput directory '" + request.directory() +
-                                                      "' differs from Setup's output_dir '" +
-                                                      out_dir_.string() +
-                                                      "'; fdm_solver writes one");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO,
+                               "WriteOutput directory '" + request.directory() +
+                                   "' differs from Setup's output_dir '" + out_dir_.string() +
+                                   "'; fdm_solver writes one");
   for (const auto& name : request.fields()) check_field(name, "WriteOutput");
   primitives_.compute(solver.state(), solver.materials());
   const std::vector<std::string> names =
@@ -48,8 +48,8 @@ cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double
     if (!writer_) writer_.emplace(out_dir_, solver.state().grid);
     written.add_files(writer_->write(solver.steps(), time, views).string());
   } catch (const std::exception& error) {
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO,
-                        "WriteOutput into '" + out_dir_.string() + "' failed: " + error.what());
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput into '" + out_dir_.string() +
+                                                             "' failed: " + error.what());
   }
   written.add_files((out_dir_ / "cells.xmf").string());
   return written;

@@ -26,7 +26,7 @@ class SnapshotOutput {
   /// Writes one snapshot of `fields` (docs/output.md names; none: the
   /// default set) at `time`. `request.directory` must be empty or out_dir;
   /// `basename` is not used (docs/output.md fixes the names). Throws
-  /// ProtocolError{IO} naming the folder, field or the writer's failure.
+  /// cosim::ProtocolError{IO} naming the folder, field or the writer's failure.
   cosim::v1::OutputWritten write(const EulerSolver& solver, double time,
                                  const cosim::v1::WriteOutput& request);
 

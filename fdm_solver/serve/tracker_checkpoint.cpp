@@ -49,8 +49,8 @@ void write_tracker_state(io::Hdf5File& h5, const MultiMaterialTracker& tracker,
   h5.write_dataset("/materials/closure_status", as_int64(states.status), cells);
 }
 
-TrackerState read_tracker_state(const CheckpointReader& reader, const grid::UniformGrid& grid,
-                                int materials) {
+TrackerState read_tracker_state(const cosim::CheckpointReader& reader,
+                                const grid::UniformGrid& grid, int materials) {
   const std::size_t cells = grid.cell_count();
   const std::size_t per_material = static_cast<std::size_t>(materials) * cells;
   const std::string range = "a material index in [0, " + std::to_string(materials) + ")";

@@ -6,7 +6,7 @@
 
 #include "common/grid/uniform_grid.hpp"
 #include "common/io/hdf5_file.hpp"
-#include "fdm_solver/serve/checkpoint_reader.hpp"
+#include "cosim/serving/checkpoint_reader.hpp"
 #include "fdm_solver/tracer/multi_material_tracker.hpp"
 
 namespace mpfd::fdm {
@@ -17,7 +17,7 @@ void write_tracker_state(io::Hdf5File& h5, const MultiMaterialTracker& tracker,
 
 /// Reads them back for a zone of `grid` and `materials` materials; a missing
 /// array, a size or an index that does not fit is a reader.mismatch().
-[[nodiscard]] TrackerState read_tracker_state(const CheckpointReader& reader,
+[[nodiscard]] TrackerState read_tracker_state(const cosim::CheckpointReader& reader,
                                               const grid::UniformGrid& grid, int materials);
 
 }  // namespace mpfd::fdm

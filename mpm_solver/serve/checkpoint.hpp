@@ -13,7 +13,7 @@ namespace mpfd::mpm {
 /// in it, NNNNNN the step; empty: Setup.output_dir/checkpoints/; relative:
 /// under Setup.output_dir), and `<file>.sha256` (sha256sum's format) beside
 /// it; both under temporary names renamed into place, the checkpoint last.
-/// Throws a non-fatal ProtocolError{IO} — no partial file left — when a file
+/// Throws a non-fatal cosim::ProtocolError{IO} — no partial file left — when a file
 /// cannot be written, or when ApplyRegion values wait for the next Advance
 /// (they are not part of a checkpoint).
 [[nodiscard]] cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
@@ -22,7 +22,7 @@ namespace mpfd::mpm {
 /// Reads a checkpoint (path as for write_checkpoint) into the zone's solver,
 /// which then continues bit for bit as the run that wrote it. The file's
 /// SHA-256 is checked against `<file>.sha256` and its contents against the
-/// zone before the state is touched; a non-fatal ProtocolError{IO} names the
+/// zone before the state is touched; a non-fatal cosim::ProtocolError{IO} names the
 /// file and what mismatched. Wakes a dormant zone.
 [[nodiscard]] cosim::v1::Restored restore_checkpoint(ServedZone& zone,
                                                      const cosim::v1::Restore& request);

@@ -3,7 +3,7 @@
 #include <array>
 
 #include "common/io/hdf5_file.hpp"
-#include "fdm_solver/serve/checkpoint_reader.hpp"
+#include "cosim/serving/checkpoint_reader.hpp"
 
 namespace mpfd::mpm {
 namespace {
@@ -23,7 +23,7 @@ std::vector<std::int64_t> as_int64(const auto& values) {
   return {values.begin(), values.end()};
 }
 
-void check_header(const fdm::CheckpointReader& in, const ServedZone& zone) {
+void check_header(const cosim::CheckpointReader& in, const ServedZone& zone) {
   const io::Hdf5File& h5 = in.file();
   const std::string format = h5.read_string_attribute("/", "format");
   if (format != kCheckpointFormat)
@@ -97,7 +97,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
 
 CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone,
                                         std::uint64_t step) {
-  const fdm::CheckpointReader in(file);
+  const cosim::CheckpointReader in(file);
   const io::Hdf5File& h5 = in.file();
   check_header(in, zone);
   CheckpointContents back;

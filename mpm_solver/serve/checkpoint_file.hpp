@@ -31,7 +31,7 @@ struct CheckpointContents {
 };
 
 /// Reads `file` for `zone` at the Restore request's `step`. Throws a
-/// non-fatal ProtocolError{IO} naming the file and what mismatched (format,
+/// non-fatal cosim::ProtocolError{IO} naming the file and what mismatched (format,
 /// version, grid cells, materials, an array's size, step, start_time) and
 /// mpfd::Error if HDF5 cannot read it.
 [[nodiscard]] CheckpointContents read_checkpoint_file(const std::filesystem::path& file,

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "common/core/require.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 #include "mpm_solver/serve/gauge_sampler.hpp"
 #include "mpm_solver/serve/node_transfer.hpp"
 #include "mpm_solver/serve/particle_transfer.hpp"
@@ -13,25 +13,24 @@
 namespace mpfd::mpm {
 namespace {
 
-using fdm::ProtocolError;
-
 cosim::v1::AdvanceResult advance(ServedZone& zone, const cosim::v1::Advance& op) {
   const double dt = op.dt();
   if (!(dt > 0.0) || !std::isfinite(dt))
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                        "Advance dt must be positive and finite, got " + shortest_text(dt) + " s");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "Advance dt must be positive and finite, got " + shortest_text(dt) + " s");
   const double now = zone.time();
   if (std::abs(op.time() - now) >
       kTimeTolerance * std::max({std::abs(op.time()), std::abs(now), dt}))
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "Advance from time " + shortest_text(op.time()) +
-                            " s, but the solver is at " + shortest_text(now) + " s (after " +
-                            std::to_string(zone.solver.steps()) + " steps)");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                               "Advance from time " + shortest_text(op.time()) +
+                                   " s, but the solver is at " + shortest_text(now) + " s (after " +
+                                   std::to_string(zone.solver.steps()) + " steps)");
   const auto start = std::chrono::steady_clock::now();
   try {
     zone.solver.advance(dt);
   } catch (const Error& error) {
-    throw ProtocolError(cosim::v1::ERROR_CODE_NUMERICAL, error.what());
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_NUMERICAL, error.what());
   }
   cosim::v1::AdvanceResult result;
   result.set_time(zone.time());
@@ -44,8 +43,9 @@ cosim::v1::AdvanceResult advance(ServedZone& zone, const cosim::v1::Advance& op)
 
 cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
   if (zone.dormant)
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "Exchange to a dormant MPM zone; send Activate first (proto/README.md §5)");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_UNEXPECTED,
+        "Exchange to a dormant MPM zone; send Activate first (proto/README.md §5)");
   cosim::Message reply;
   auto& results = *reply.header.mutable_exchange_result();
   MpmSolver& solver = zone.solver;
@@ -91,9 +91,10 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
         result.mutable_sampled()->set_count(sample_gauges(solver, op.sample(), reply));
         break;
       case cosim::v1::Operation::OP_NOT_SET:
-        throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                            "Exchange operation " + std::to_string(results.results_size() - 1) +
-                                " has no operation set");
+        throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                                   "Exchange operation " +
+                                       std::to_string(results.results_size() - 1) +
+                                       " has no operation set");
     }
   }
   return reply;

@@ -13,7 +13,7 @@ inline constexpr double kTimeTolerance = 1e-9;
 
 /// Runs ApplyRegion, InjectParticles, Advance, ExportRegion, RemoveParticles,
 /// ProposeDt and SampleGauges in the order given; returns the ExchangeResult
-/// with the exported, removed and sampled arrays. Throws ProtocolError:
+/// with the exported, removed and sampled arrays. Throws cosim::ProtocolError:
 /// UNKNOWN_REGION, MALFORMED, UNEXPECTED (a dormant zone, or Advance from
 /// another time than the solver's) or NUMERICAL (the solver broke down).
 [[nodiscard]] cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request);

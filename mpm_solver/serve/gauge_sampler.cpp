@@ -4,12 +4,10 @@
 #include <string_view>
 
 #include "cosim/arrays.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::mpm {
 namespace {
-
-using fdm::ProtocolError;
 
 struct GaugeQuantity {
   std::string_view name;
@@ -32,8 +30,8 @@ const GaugeQuantity& find(const std::string& name) {
     if (q.name == name) return q;
   std::string known;
   for (const auto& q : kQuantities) known += (known.empty() ? "" : ", ") + std::string(q.name);
-  throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                      "SampleGauges: unknown quantity '" + name + "'; known: " + known);
+  throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                             "SampleGauges: unknown quantity '" + name + "'; known: " + known);
 }
 
 }  // namespace
@@ -42,14 +40,14 @@ std::uint64_t sample_gauges(const MpmSolver& solver, const cosim::v1::SampleGaug
                             cosim::Message& reply) {
   const auto gauges = static_cast<std::size_t>(request.gauge_names_size());
   if (static_cast<std::size_t>(request.positions_size()) != 3 * gauges)
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
-                        "SampleGauges group '" + request.group() + "': " + std::to_string(gauges) +
-                            " gauges need " + std::to_string(3 * gauges) +
-                            " position values (x, y, z each), got " +
-                            std::to_string(request.positions_size()));
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "SampleGauges group '" + request.group() + "': " + std::to_string(gauges) +
+            " gauges need " + std::to_string(3 * gauges) + " position values (x, y, z each), got " +
+            std::to_string(request.positions_size()));
   const ParticleSet& ps = solver.particles();
   if (ps.size() == 0 && gauges > 0)
-    throw ProtocolError(
+    throw cosim::ProtocolError(
         cosim::v1::ERROR_CODE_MALFORMED,
         "SampleGauges group '" + request.group() + "': the MPM zone holds no particle to read");
   std::vector<std::size_t> nearest(gauges);

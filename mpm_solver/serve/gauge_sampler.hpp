@@ -12,7 +12,7 @@ namespace mpfd::mpm {
 /// Appends one F64 [n_gauges] array per quantity (density, pressure,
 /// velocity_x, velocity_y, velocity_z, specific_internal_energy), group
 /// request.group(), to `reply`; returns n_gauges. `positions` holds three
-/// coordinates per gauge. Throws ProtocolError{MALFORMED} naming the
+/// coordinates per gauge. Throws cosim::ProtocolError{MALFORMED} naming the
 /// quantity or the position count, or when the zone holds no particle.
 std::uint64_t sample_gauges(const MpmSolver& solver, const cosim::v1::SampleGauges& request,
                             cosim::Message& reply);

@@ -4,16 +4,14 @@
 #include <cstring>
 
 #include "cosim/arrays.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::mpm {
 namespace {
 
-using fdm::ProtocolError;
-
 [[noreturn]] void reject(cosim::v1::ErrorCode code, const ZoneRegion& region,
                          std::string_view quantity, const std::string& rule) {
-  throw ProtocolError(
+  throw cosim::ProtocolError(
       code, "region '" + region.name + "', quantity '" + std::string(quantity) + "': " + rule);
 }
 
@@ -87,20 +85,22 @@ std::vector<double> cell_internal_energy(const MpmSolver& solver, const ZoneRegi
 void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
                        cosim::v1::ApplyRegion::Mode mode, const cosim::Message& request) {
   if (region.kind != cosim::v1::REGION_KIND_NODES)
-    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                        "ApplyRegion on region '" + region.name +
-                            "': only NODES regions of an MPM zone take values (particles come "
-                            "through InjectParticles)");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_UNEXPECTED,
+        "ApplyRegion on region '" + region.name +
+            "': only NODES regions of an MPM zone take values (particles come "
+            "through InjectParticles)");
   if (mode != cosim::v1::ApplyRegion::MODE_SET && mode != cosim::v1::ApplyRegion::MODE_ADD)
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, "ApplyRegion on region '" + region.name +
-                                                             "' needs mode MODE_SET or MODE_ADD");
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "ApplyRegion on region '" + region.name + "' needs mode MODE_SET or MODE_ADD");
   std::vector<std::string> seen;
   for (const auto& array : request.header.arrays())
     if (array.group() == region.name) check_apply_array(region, array, seen);
   if (seen.empty())
-    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, "ApplyRegion on region '" + region.name +
-                                                             "' carries no array of group '" +
-                                                             region.name + "'");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                               "ApplyRegion on region '" + region.name +
+                                   "' carries no array of group '" + region.name + "'");
   for (const auto& array : request.header.arrays()) {
     if (array.group() != region.name) continue;
     const std::size_t components = apply_components(array.name());

@@ -15,7 +15,7 @@ namespace mpfd::mpm {
 /// mass [n] kg, momentum [n, 3] kg m/s, internal_force [n, 3] N; SET
 /// replaces the mapped value at the next advance, ADD adds to it (T (4-7)...
 /// (4-9)). All arrays are checked before any is queued. Throws
-/// ProtocolError{MALFORMED or UNKNOWN_REGION} naming region, quantity,
+/// cosim::ProtocolError{MALFORMED or UNKNOWN_REGION} naming region, quantity,
 /// expected and got.
 void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
                        cosim::v1::ApplyRegion::Mode mode, const cosim::Message& request);

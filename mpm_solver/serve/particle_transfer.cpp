@@ -4,15 +4,13 @@
 #include <unordered_map>
 
 #include "cosim/arrays.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::mpm {
 namespace {
 
-using fdm::ProtocolError;
-
 [[noreturn]] void malformed(const std::string& what) {
-  throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, what);
+  throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, what);
 }
 
 /// The array `group`/`name`, checked for dtype T and n x components values
@@ -97,7 +95,7 @@ std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticl
     batch.stress = read_array<double>(request, operation, group, "stress", kVoigt, n);
   try {
     solver.inject_particles(batch);
-  } catch (const ProtocolError&) {
+  } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const Error& error) {
     malformed(operation + " group '" + group + "': " + error.what());
@@ -112,7 +110,7 @@ std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
   std::vector<std::uint8_t> flags(ps.size(), 0);
   if (left_region != nullptr) {
     if (left_region->kind != cosim::v1::REGION_KIND_PARTICLES)
-      throw ProtocolError(
+      throw cosim::ProtocolError(
           cosim::v1::ERROR_CODE_UNKNOWN_REGION,
           "RemoveParticles: left_region '" + left_region->name + "' is not a PARTICLES region");
     for (std::size_t p = 0; p < ps.size(); ++p) flags[p] = inside(solver, *left_region, p) ? 0 : 1;
@@ -142,9 +140,9 @@ std::uint64_t export_particle_region(const MpmSolver& solver, const ZoneRegion& 
   if (names.empty()) names = region.quantities;
   for (const auto& name : names)
     if (!region.declares(name))
-      throw ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
-                          "region '" + region.name + "', quantity '" + name +
-                              "': not declared for it in Setup, so it cannot be exported");
+      throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+                                 "region '" + region.name + "', quantity '" + name +
+                                     "': not declared for it in Setup, so it cannot be exported");
   const ParticleSet& ps = solver.particles();
   std::vector<std::size_t> members;
   for (std::size_t p = 0; p < ps.size(); ++p)

@@ -16,7 +16,7 @@ namespace mpfd::mpm {
 
 /// Injects the particles of arrays `group`/{id, position, velocity, mass,
 /// volume, internal_energy, material[, stress]}. Returns the count. Throws
-/// ProtocolError{MALFORMED} naming the group and the array (missing, wrong
+/// cosim::ProtocolError{MALFORMED} naming the group and the array (missing, wrong
 /// dtype or size) or the particle the solver refused.
 std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticles& op,
                                const cosim::Message& request);
@@ -25,7 +25,7 @@ std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticl
 /// particle outside the PARTICLES region `left_region`, and appends their
 /// state as arrays of group `group` (id, position, velocity, mass, volume,
 /// internal_energy, material, stress). Returns the count. Throws
-/// ProtocolError{MALFORMED} for an id array that is missing, not U64, or
+/// cosim::ProtocolError{MALFORMED} for an id array that is missing, not U64, or
 /// names a particle the zone does not hold, UNKNOWN_REGION for left_region.
 std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
                                const cosim::v1::RemoveParticles& op, const cosim::Message& request,

@@ -3,15 +3,13 @@
 #include <cmath>
 
 #include "common/config/scene_loader.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::mpm {
 namespace {
 
-using fdm::ProtocolError;
-
 [[noreturn]] void reject(cosim::v1::ErrorCode code, const std::string& rule) {
-  throw ProtocolError(code, "Setup: " + rule);
+  throw cosim::ProtocolError(code, "Setup: " + rule);
 }
 
 config::Scene parse_fragment(const cosim::v1::Setup& setup) {
@@ -56,7 +54,7 @@ const ZoneRegion& ServedZone::region(const std::string& name, std::string_view o
   if (const auto found = regions.find(name); found != regions.end()) return found->second;
   std::string known;
   for (const auto& [key, value] : regions) known += (known.empty() ? "" : ", ") + key;
-  throw ProtocolError(
+  throw cosim::ProtocolError(
       cosim::v1::ERROR_CODE_UNKNOWN_REGION,
       std::string(operation) + ": region '" + name +
           "' was not declared in Setup; declared: " + (known.empty() ? "none" : known));

@@ -33,7 +33,7 @@ struct ServedZone {
 
   /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
   [[nodiscard]] double time() const { return start_time + solver.time(); }
-  /// The region called `name`; throws ProtocolError{UNKNOWN_REGION} listing the known ones.
+  /// The region called `name`; throws cosim::ProtocolError{UNKNOWN_REGION} listing the known ones.
   [[nodiscard]] const ZoneRegion& region(const std::string& name, std::string_view operation) const;
 };
 
@@ -41,7 +41,7 @@ struct ServedZone {
 /// (YAML or JSON) through parse_scene (its domain is the zone's background
 /// grid, its bodies the zone's particles; solver.method is not read), the zone grid
 /// (if given) checked against the scene's cells, every region checked
-/// (zone_region.hpp). Throws ProtocolError.
+/// (zone_region.hpp). Throws cosim::ProtocolError.
 [[nodiscard]] std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup);
 
 /// SetupAck: the regions with the quantities served, and the first stable dt.

@@ -1,18 +1,17 @@
 #include "mpm_solver/serve/write_output.hpp"
 
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::mpm {
 
 cosim::v1::OutputWritten write_output(ServedZone& zone, const cosim::v1::WriteOutput& request) {
-  using fdm::ProtocolError;
   if (zone.output_dir.empty())
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput: Setup gave no output_dir");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput: Setup gave no output_dir");
   if (!request.directory().empty() && std::filesystem::path(request.directory()) != zone.output_dir)
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput directory '" + request.directory() +
-                                                      "' differs from Setup's output_dir '" +
-                                                      zone.output_dir.string() +
-                                                      "'; mpm_solver writes one");
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO,
+                               "WriteOutput directory '" + request.directory() +
+                                   "' differs from Setup's output_dir '" +
+                                   zone.output_dir.string() + "'; mpm_solver writes one");
   cosim::v1::OutputWritten written;
   try {
     if (!zone.snapshots) {
@@ -24,8 +23,9 @@ cosim::v1::OutputWritten write_output(ServedZone& zone, const cosim::v1::WriteOu
             ->write(zone.solver.steps(), zone.time(), {}, zone.snapshot_fields.views(zone.solver))
             .string());
   } catch (const std::exception& error) {
-    throw ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput into '" + zone.output_dir.string() +
-                                                      "' failed: " + error.what());
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_IO,
+        "WriteOutput into '" + zone.output_dir.string() + "' failed: " + error.what());
   }
   written.add_files((zone.output_dir / "particles.xmf").string());
   return written;

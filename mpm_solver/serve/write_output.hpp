@@ -11,7 +11,7 @@ namespace mpfd::mpm {
 /// Writes every particle field of snapshot_particles.hpp at the zone's time.
 /// `request.directory` must be empty or Setup.output_dir; `basename` and
 /// `fields` are not used (docs/output.md fixes names and the MPM set).
-/// Throws ProtocolError{IO} naming the folder or the writer's failure.
+/// Throws cosim::ProtocolError{IO} naming the folder or the writer's failure.
 [[nodiscard]] cosim::v1::OutputWritten write_output(ServedZone& zone,
                                                     const cosim::v1::WriteOutput& request);
 

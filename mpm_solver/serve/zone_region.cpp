@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <array>
 
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
 namespace mpfd::mpm {
 namespace {
-
-using fdm::ProtocolError;
 
 constexpr std::array<std::string_view, 4> kNodeQuantities = {"mass", "momentum", "internal_force",
                                                              "internal_energy"};
@@ -32,10 +30,11 @@ std::string names_text(const std::array<std::string_view, N>& names) {
 
 [[noreturn]] void reject(const cosim::v1::Region& region, const grid::UniformGrid& grid,
                          const std::string& rule) {
-  throw ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
-                      "Setup region '" + region.name() + "' (box lo " +
-                          index_text(region.box().lo()) + ", hi " + index_text(region.box().hi()) +
-                          "): " + rule + "; the MPM grid has cells " + index_text(grid.cells()));
+  throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+                             "Setup region '" + region.name() + "' (box lo " +
+                                 index_text(region.box().lo()) + ", hi " +
+                                 index_text(region.box().hi()) + "): " + rule +
+                                 "; the MPM grid has cells " + index_text(grid.cells()));
 }
 
 }  // namespace

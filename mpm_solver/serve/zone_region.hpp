@@ -43,7 +43,7 @@ struct ZoneRegion {
 /// cells (+1 for nodes on an active axis), known quantities (none given:
 /// mass, momentum for nodes; id, position, velocity, mass, volume,
 /// internal_energy, material for particles). Throws
-/// ProtocolError{UNKNOWN_REGION} naming the region, its box and the rule.
+/// cosim::ProtocolError{UNKNOWN_REGION} naming the region, its box and the rule.
 [[nodiscard]] ZoneRegion make_zone_region(const cosim::v1::Region& region,
                                           const grid::UniformGrid& grid);
 

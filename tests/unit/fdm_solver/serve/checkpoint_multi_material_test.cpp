@@ -9,8 +9,8 @@
 #include <string>
 
 #include "checkpoint_support.hpp"
+#include "cosim/serving/sha256.hpp"
 #include "fdm_solver/serve/checkpoint.hpp"
-#include "fdm_solver/serve/sha256.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -42,7 +42,7 @@ TEST(FdmCheckpointMultiMaterial,
   const std::filesystem::path file = dir.path() / "checkpoints" / "checkpoint_000012.h5";
   ASSERT_EQ(written.path(), file.string());
   EXPECT_EQ(written.bytes(), std::filesystem::file_size(file));
-  EXPECT_EQ(written.sha256(), sha256_hex_of_file(file));
+  EXPECT_EQ(written.sha256(), cosim::sha256_hex_of_file(file));
   std::ifstream sidecar(file.string() + ".sha256");
   std::string digest, name;
   sidecar >> digest >> name;

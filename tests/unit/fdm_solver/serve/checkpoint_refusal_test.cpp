@@ -10,9 +10,9 @@
 #include <fstream>
 
 #include "checkpoint_support.hpp"
+#include "cosim/serving/protocol_error.hpp"
+#include "cosim/serving/sha256.hpp"
 #include "fdm_solver/serve/checkpoint.hpp"
-#include "fdm_solver/serve/protocol_error.hpp"
-#include "fdm_solver/serve/sha256.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -44,7 +44,7 @@ fs::path copy_of(const fs::path& file, const std::string& name) {
 /// Rewrites the digest beside `file` to match it as it is now.
 void redigest(const fs::path& file) {
   std::ofstream(file.string() + ".sha256")
-      << sha256_hex_of_file(file) << "  " << file.filename().string() << '\n';
+      << cosim::sha256_hex_of_file(file) << "  " << file.filename().string() << '\n';
 }
 
 class FdmCheckpointRefusal : public ::testing::Test {
@@ -68,7 +68,7 @@ class FdmCheckpointRefusal : public ::testing::Test {
     std::string text = "(no error: the restore was done)";
     try {
       (void)restore_checkpoint(*zone_, request);
-    } catch (const ProtocolError& error) {
+    } catch (const cosim::ProtocolError& error) {
       EXPECT_EQ(error.code(), cosim::v1::ERROR_CODE_IO);
       EXPECT_FALSE(error.fatal());
       text = error.what();
@@ -116,7 +116,7 @@ TEST_F(FdmCheckpointRefusal, AFlippedByteFailsTheDigest) {
     bytes.put(static_cast<char>(c ^ 0x01));
   }
   EXPECT_THAT(refusal(file), AllOf(HasSubstr(file.string()), HasSubstr("has SHA-256"),
-                                   HasSubstr("records " + sha256_hex_of_file(good_))));
+                                   HasSubstr("records " + cosim::sha256_hex_of_file(good_))));
 }
 
 TEST_F(FdmCheckpointRefusal, AFileWithoutItsDigestIsNotRead) {

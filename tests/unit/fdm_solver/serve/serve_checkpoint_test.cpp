@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "checkpoint_support.hpp"
-#include "fdm_solver/serve/sha256.hpp"
+#include "cosim/serving/sha256.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -45,9 +45,10 @@ std::vector<double> exported_state(ServedFdm& fdm) {
 }
 
 TEST(FdmServeCheckpoint, Sha256OfAbcIsTheFips180Example) {
-  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(cosim::sha256_hex("abc"),
+            "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   // 56 bytes: the padding needs a second block (FIPS 180-2 appendix B.2).
-  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+  EXPECT_EQ(cosim::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
             "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 }
 
@@ -64,7 +65,7 @@ TEST(FdmServeCheckpoint,
   const auto file = dir.path() / "checkpoints" / "checkpoint_000010.h5";
   EXPECT_EQ(written.path(), file.string());
   EXPECT_EQ(written.bytes(), std::filesystem::file_size(file));
-  EXPECT_EQ(written.sha256(), sha256_hex_of_file(file));
+  EXPECT_EQ(written.sha256(), cosim::sha256_hex_of_file(file));
   const double t20 = advance(first, t10, 10);
   const auto uninterrupted = exported_state(first);
 
@@ -129,7 +130,7 @@ TEST(FdmServeCheckpoint,
   first.request(setup(scene, {all}, dir.path().string()));
   const double t12 = advance_by(first, 0.0, 12);
   const auto written = first.request(checkpoint_to("")).header.checkpoint_written();
-  EXPECT_EQ(written.sha256(), sha256_hex_of_file(written.path()));
+  EXPECT_EQ(written.sha256(), cosim::sha256_hex_of_file(written.path()));
   advance_by(first, t12, 8);
   const auto uninterrupted = exported(first);
 

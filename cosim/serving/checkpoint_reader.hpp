@@ -12,7 +12,7 @@
 
 #include "common/io/hdf5_file.hpp"
 
-namespace mpfd::fdm {
+namespace mpfd::cosim {
 
 class CheckpointReader {
  public:
@@ -36,4 +36,4 @@ class CheckpointReader {
   io::Hdf5File h5_;
 };
 
-}  // namespace mpfd::fdm
+}  // namespace mpfd::cosim

@@ -6,11 +6,11 @@
 #include <string>
 #include <string_view>
 
-namespace mpfd::fdm {
+namespace mpfd::cosim {
 
 /// Lower-case hex digest of `bytes`.
 [[nodiscard]] std::string sha256_hex(std::string_view bytes);
 /// Lower-case hex digest of the file's contents; throws mpfd::Error naming the file.
 [[nodiscard]] std::string sha256_hex_of_file(const std::filesystem::path& path);
 
-}  // namespace mpfd::fdm
+}  // namespace mpfd::cosim

@@ -1,10 +1,10 @@
-#include "fdm_solver/serve/checkpoint_reader.hpp"
+#include "cosim/serving/checkpoint_reader.hpp"
 
 #include <cmath>
 
-#include "fdm_solver/serve/protocol_error.hpp"
+#include "cosim/serving/protocol_error.hpp"
 
-namespace mpfd::fdm {
+namespace mpfd::cosim {
 
 CheckpointReader::CheckpointReader(const std::filesystem::path& path)
     : h5_(path, io::Hdf5File::Mode::read) {}
@@ -41,4 +41,4 @@ std::vector<int> CheckpointReader::indices(const std::string& name, std::size_t 
   return out;
 }
 
-}  // namespace mpfd::fdm
+}  // namespace mpfd::cosim

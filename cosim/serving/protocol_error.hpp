@@ -1,5 +1,5 @@
 #pragma once
-// A request the FDM solver cannot carry out, with the protocol's error code
+// A request a solver cannot carry out, with the protocol's error code
 // (proto/README.md §9). The serve loop answers it as Error{code, message, fatal}
 // and, when fatal, stops with it.
 
@@ -8,7 +8,7 @@
 #include "common/core/error.hpp"
 #include "cosim/message.hpp"
 
-namespace mpfd::fdm {
+namespace mpfd::cosim {
 
 class ProtocolError : public Error {
  public:
@@ -23,4 +23,4 @@ class ProtocolError : public Error {
   bool fatal_;
 };
 
-}  // namespace mpfd::fdm
+}  // namespace mpfd::cosim

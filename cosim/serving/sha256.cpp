@@ -1,4 +1,4 @@
-#include "fdm_solver/serve/sha256.hpp"
+#include "cosim/serving/sha256.hpp"
 
 #include <array>
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include "common/core/error.hpp"
 
-namespace mpfd::fdm {
+namespace mpfd::cosim {
 namespace {
 
 // FIPS 180-4 §4.2.2: the first 32 bits of the fractional parts of the cube
@@ -82,4 +82,4 @@ std::string sha256_hex_of_file(const std::filesystem::path& path) {
   return sha256_hex(bytes);
 }
 
-}  // namespace mpfd::fdm
+}  // namespace mpfd::cosim
