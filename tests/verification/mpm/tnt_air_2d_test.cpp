@@ -23,8 +23,9 @@ constexpr double kAirPressure = 0.4 * 1.225 * 2.0685e5;  // gamma - 1 = 0.4 [Pa]
 
 struct Gauge {
   double x = 0.0, y = 0.0;
-  double peak = 0.0;      ///< largest overpressure [Pa]
-  double arrival = -1.0;  ///< first time the overpressure exceeds 10 kPa [s]
+  double peak = 0.0;          ///< largest overpressure [Pa]
+  double arrival = -1.0;      ///< first time the overpressure exceeds 10 kPa [s]
+  std::size_t peak_body = 0;  ///< body of the particle that read the peak
 };
 
 std::size_t nearest(const ParticleSet& ps, double x, double y) {
@@ -54,8 +55,12 @@ std::vector<Gauge> run_charge(int coarsening, double end) {
     solver.advance(solver.step_toward(end));
     const auto& ps = solver.particles();
     for (auto& g : gauges) {
-      const double over = ps.pressure[nearest(ps, g.x, g.y)] - kAirPressure;
-      g.peak = std::max(g.peak, over);
+      const std::size_t p = nearest(ps, g.x, g.y);
+      const double over = ps.pressure[p] - kAirPressure;
+      if (over > g.peak) {
+        g.peak = over;
+        g.peak_body = ps.body[p];
+      }
       if (g.arrival < 0.0 && over > 1e4) g.arrival = solver.time();
     }
   }
@@ -65,8 +70,9 @@ std::vector<Gauge> run_charge(int coarsening, double end) {
               1e3 * (scene.domain.upper[0] - scene.domain.lower[0]) / scene.domain.cells[0],
               solver.particles().size(), static_cast<long long>(solver.steps()), seconds);
   for (const auto& g : gauges)
-    std::printf("  gauge r = %.2f m: arrival %.1f us, peak overpressure %.3f MPa\n", g.x,
-                g.arrival * 1e6, g.peak / 1e6);
+    std::printf(
+        "  gauge r = %.2f m: arrival %.1f us, peak overpressure %.3f MPa (a particle of %s)\n", g.x,
+        g.arrival * 1e6, g.peak / 1e6, solver.bodies()[g.peak_body].name.c_str());
   const double mass = solver.totals().mass + solver.boundary_ledger().mass;
   EXPECT_NEAR(mass, mass0, 1e-12 * mass0);
   for (std::size_t i = 0; i < gauges.size(); ++i) {
@@ -79,7 +85,7 @@ std::vector<Gauge> run_charge(int coarsening, double end) {
 }
 
 TEST(TntAir2dFast, CoarseBlastReachesTheGaugesInOrderAndWeakensWithDistance) {
-  run_charge(4, 2.0e-4);  // h = 10 mm
+  run_charge(2, 2.0e-4);  // h = 10 mm
 }
 
 TEST(TntAir2dFull, BlastPeaksAtTheGauges) {
