@@ -13,6 +13,7 @@
 #include "common/io/run_summary.hpp"
 #include "common/io/snapshot_writer.hpp"
 #include "common/io/standalone_loop.hpp"
+#include "mpm_solver/cell_fields.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/snapshot_particles.hpp"
 
@@ -35,6 +36,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
   io::RunSummary summary("mpm_solver run", scene.name, options.scene_file);
   io::SnapshotWriter snapshots(options.out_dir, solver.grid());
   SnapshotParticles particle_fields;
+  CellFields cell_fields(scene, solver.grid());
   std::vector<io::GaugePoint> points;
   for (const auto& g : scene.gauges) points.push_back({g.name, g.position});
   io::GaugeRecorder gauges(options.out_dir, points,
@@ -42,7 +44,12 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
                             {"pressure", "Pa"},
                             {"velocity_x", "m/s"},
                             {"velocity_y", "m/s"},
-                            {"velocity_z", "m/s"}});
+                            {"velocity_z", "m/s"},
+                            {"cell_density", "kg/m^3"},
+                            {"cell_pressure", "Pa"},
+                            {"cell_velocity_x", "m/s"},
+                            {"cell_velocity_y", "m/s"},
+                            {"cell_velocity_z", "m/s"}});
   // Room for the samples up front, so recording does not allocate while stepping.
   const double per_step = scene.time.end / solver.stable_dt();
   const double interval_samples =
@@ -51,7 +58,11 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     gauges.reserve(static_cast<std::size_t>(
         std::min({2.0 * std::min(interval_samples, per_step) + 16.0,
                   static_cast<double>(scene.time.max_steps) + 1.0, 1.0e7})));
-  std::vector<double> sample(5 * points.size());
+  std::vector<grid::Vec3> gauge_positions;
+  for (const auto& g : points) gauge_positions.push_back(g.position);
+  GaugeCells gauge_cells(solver.grid(), gauge_positions);
+  std::vector<double> cell_sample(5 * points.size());
+  std::vector<double> sample(10 * points.size());
   const auto record_gauges = [&] {
     const ParticleSet& ps = solver.particles();
     if (ps.size() == 0) return;
@@ -59,8 +70,12 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
       const std::size_t p = nearest_particle(ps, points[g].position);
       const double values[5] = {ps.density[p], ps.pressure[p], ps.velocity[0][p], ps.velocity[1][p],
                                 ps.velocity[2][p]};
-      std::copy(values, values + 5, sample.begin() + static_cast<std::ptrdiff_t>(5 * g));
+      std::copy(values, values + 5, sample.begin() + static_cast<std::ptrdiff_t>(10 * g));
     }
+    gauge_cells.sample(ps, cell_sample);
+    for (std::size_t g = 0; g < points.size(); ++g)
+      std::copy_n(cell_sample.begin() + static_cast<std::ptrdiff_t>(5 * g), 5,
+                  sample.begin() + static_cast<std::ptrdiff_t>(10 * g + 5));
     gauges.record(solver.time(), sample);
   };
 
@@ -106,7 +121,8 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.write(options.out_dir / "summary.json");
   };
   const auto write_output = [&] {
-    snapshots.write(solver.steps(), solver.time(), {}, particle_fields.views(solver));
+    snapshots.write(solver.steps(), solver.time(), cell_fields.views(solver),
+                    particle_fields.views(solver));
     gauges.flush();
     write_summary("running", "");
   };
