@@ -98,8 +98,13 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_detail("audit_scale",
                        {{"value", momentum_scale},
                         {"meaning", "sqrt(2 M E): momentum errors are relative to it"}});
+    // Plastic work is part of the internal energy (it heats); shown apart for metals.
+    const ParticleSet& ps = solver.particles();
+    double plastic_work = 0.0;
+    for (std::size_t p = 0; p < ps.size(); ++p) plastic_work += ps.mass[p] * ps.plastic_work[p];
     summary.set_detail("energy_J", {{"kinetic", now.kinetic_energy},
                                     {"internal", now.internal_energy},
+                                    {"plastic_work_in_internal", plastic_work},
                                     {"boundary_outflow", ledger.energy}});
     summary.set_detail("momentum_boundary",
                        "momentum boundary_outflow = carried out by removed particles minus the "
