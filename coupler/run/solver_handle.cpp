@@ -82,6 +82,7 @@ class ChildSolver final : public SolverHandle {
                   "): " + std::strerror(failed));
   }
   ~ChildSolver() override { finish(std::chrono::milliseconds(0)); }
+  std::optional<int> process_id() const override { return pid_; }
 
   std::optional<std::string> ended() override {
     if (how_) return how_;

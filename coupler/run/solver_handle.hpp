@@ -27,6 +27,8 @@ class SolverHandle {
   /// Waits up to `grace` for the solver to end by itself, then ends it (a
   /// child: SIGKILL by its pid). Returns how it ended.
   virtual std::string finish(std::chrono::milliseconds grace) = 0;
+  /// The process id of a solver the coupler started as a child, else nothing.
+  [[nodiscard]] virtual std::optional<int> process_id() const { return std::nullopt; }
 
  private:
   std::string name_;
