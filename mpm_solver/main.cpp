@@ -1,14 +1,19 @@
 // mpm_solver: the explicit material point method solver. `run SCENE --out DIR`
 // advances a scene on its own (no coupler) and writes the layout of
-// docs/output.md.
+// docs/output.md; `serve --endpoint URL` is driven step by step by a coupler
+// (proto/README.md).
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
 #include <exception>
 #include <iostream>
+#include <zmq.hpp>
 
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
+#include "mpm_solver/serve/serve.hpp"
 #include "mpm_solver/standalone_run.hpp"
 
 int main(int argc, char** argv) {
@@ -24,10 +29,32 @@ int main(int argc, char** argv) {
   run->add_flag("--overwrite", options.overwrite, "reuse a folder that holds an earlier run");
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
+  mpfd::mpm::ServeOptions serve_options;
+  double idle_seconds = 60.0;
+  auto* serve = app.add_subcommand("serve", "answer a coupler over protocol v1 (proto/README.md)");
+  serve
+      ->add_option("--endpoint", serve_options.endpoint,
+                   "the coupler's endpoint: ipc:///path, tcp://host:port")
+      ->required();
+  serve->add_option("--name", serve_options.name, "routing id the coupler knows this solver by")
+      ->capture_default_str();
+  serve
+      ->add_option("--idle-timeout", idle_seconds,
+                   "seconds to wait for the coupler's next request before stopping with an error")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  serve->add_option("--threads", threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (threads > 0) omp_set_num_threads(threads);
+    if (*serve) {
+      serve_options.idle_timeout = std::chrono::milliseconds(std::llround(idle_seconds * 1e3));
+      zmq::context_t context;
+      mpfd::mpm::serve(context, serve_options);
+      return 0;
+    }
     options.scene_file = scene_file;
     options.out_dir = out_dir;
     const auto scene = mpfd::config::load_scene(scene_file);

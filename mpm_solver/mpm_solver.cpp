@@ -69,6 +69,9 @@ MpmSolver::MpmSolver(const config::Scene& scene, MpmSettings settings)
   GeneratedParticles generated = generate_particles(scene, g);
   particles_ = std::move(generated.particles);
   bodies_ = std::move(generated.bodies);
+  scene_bodies_ = bodies_.size();
+  materials_ = scene.materials;
+  for (std::size_t p = 0; p < particles_.size(); ++p) particles_.id[p] = kSceneParticleIdBase + p;
 
   models_.resize(scene.materials.size());
   for (const auto& body : bodies_)
@@ -114,6 +117,7 @@ void MpmSolver::advance(double dt) {
     throw Error("mpm: time step must be positive and finite, got " + std::to_string(dt));
   rebuild_grid();
   particles_to_grid();
+  if (!node_loads_.empty()) apply_node_loads();
   integrate_nodes(dt);
   if (settings_.update == config::MpmUpdate::musl) {
     update_and_remap_velocities(dt);
@@ -142,6 +146,11 @@ void MpmSolver::rebuild_grid() {
       hi[a] = active[a] ? lo[a] + width - 1 : lo[a];
     }
     home_slot_[p] = grid_.activate(lo, hi);
+  }
+  for (const NodeLoad& load : node_loads_) {  // a coupler's node may lie beyond every stencil
+    grid::Index3 node{};
+    for (int a = 0; a < 3; ++a) node[a] = load.node[a] + grid_.offset()[a];
+    grid_.activate(node, node);
   }
   grid_.allocate_nodes();
   grid_.bin_particles(home_slot_);

@@ -21,6 +21,11 @@
 //                             model (2-21) with the program burn (3-1), (3-2)
 //   7. remove_outflow()       particles that left through an outflow face
 //
+// In a coupled run (mpm_solver serve) a coupler's nodal contributions
+// (queue_node_load, T (4-7)...(4-9), T §4.3 steps 3 and 5) act between steps 2
+// and 3: after (2-9)-(2-12) have mapped the particles, before (2-13). Without
+// them a step is the standalone step, bit for bit.
+//
 // USL skips steps 4 and 5 and does (2-15) in step 6. All weights are N^n (the
 // particles' positions at the start of the step). Nothing is allocated inside a
 // step once the grid's arrays have reached their largest size.
@@ -28,11 +33,13 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "common/config/scene.hpp"
 #include "mpm_solver/bulk_viscosity.hpp"
 #include "mpm_solver/material/constitutive_model.hpp"
+#include "mpm_solver/particle_batch.hpp"
 #include "mpm_solver/particle_generation.hpp"
 #include "mpm_solver/particle_stencil.hpp"
 #include "mpm_solver/sparse_grid.hpp"
@@ -79,6 +86,12 @@ struct BoundaryLedger {
   std::int64_t particles_removed = 0;
 };
 
+/// Mass and momentum a node holds after the particles are mapped to the grid.
+struct NodeState {
+  double mass = 0.0;                 ///< m_I (2-12) [kg]
+  std::array<double, 3> momentum{};  ///< p_I (2-9) [kg m/s]
+};
+
 class MpmSolver {
  public:
   /// Particles from the scene's bodies and charges (particle_generation.hpp),
@@ -112,6 +125,37 @@ class MpmSolver {
   /// Burn fraction F (T (3-2)) of particle p now.
   [[nodiscard]] double burn_fraction(std::size_t p) const;
 
+  // --- Coupling (mpm_solver serve, proto/README.md §6). A standalone run calls none of these.
+
+  /// Appends particles (T (4-15)...(4-18)): density m/V, e = E/m, pressure and
+  /// sound speed from their material's model; with a stress, p = -tr(sigma)/3
+  /// and the deviator from it instead. They join the inert body "injected
+  /// <material>" (GIMP half-width of two particles per cell). Throws
+  /// mpfd::Error naming the first bad particle (non-positive mass or volume,
+  /// unknown material, position off the grid) before anything is added.
+  void inject_particles(const ParticleBatch& batch);
+  /// Removes the particles whose flag is not 0 and returns their state (not
+  /// booked as outflow: the coupler takes them over).
+  [[nodiscard]] ParticleBatch remove_particles(std::span<const std::uint8_t> flags);
+  /// Maps the particles to the grid as step 2 does, so that node_state reads
+  /// the current state; the next advance maps again.
+  void map_particles_to_nodes();
+  /// A grid node's mass and momentum after map_particles_to_nodes (zero
+  /// where no particle's stencil reaches). `node`: grid node indices.
+  [[nodiscard]] NodeState node_state(const grid::Index3& node) const;
+  /// Queues a contribution for the next advance, applied in queue order
+  /// after (2-12) and before (2-13) (see the step order above).
+  void queue_node_load(const NodeLoad& load);
+  [[nodiscard]] std::size_t queued_node_loads() const { return node_loads_.size(); }
+  /// Bodies from the scene; later ones were made by inject_particles.
+  [[nodiscard]] std::size_t scene_body_count() const { return scene_bodies_; }
+  /// Replaces the state with a checkpoint's: particles, the materials of the
+  /// injected bodies (in body order), clock, ledger. Throws mpfd::Error,
+  /// leaving the state as it was, if they do not fit this scene.
+  void restore(ParticleSet particles, std::span<const std::size_t> injected_body_materials,
+               double time, std::int64_t steps, const BoundaryLedger& ledger,
+               double particle_updates);
+
  private:
   void rebuild_grid();
   /// GIMP half-widths of particle p per axis [grid units]: its body's, times F_aa for cpGIMP.
@@ -126,6 +170,11 @@ class MpmSolver {
   void apply_face_conditions(std::array<std::vector<double>, 3>& field,
                              std::array<std::vector<double>, 3>* force, double dt);
   void compute_stable_dt();
+  /// The model of `material`, made (and the history stride widened) on first use.
+  ConstitutiveModel& model_for(std::size_t material);
+  /// The body injected particles of `material` join, made on first use.
+  std::uint16_t injected_body(std::size_t material);
+  void apply_node_loads();
 
   MpmSettings settings_;
   std::array<config::BoundaryKind, 6> faces_{};
@@ -137,8 +186,11 @@ class MpmSolver {
   ParticleSet particles_;
   std::vector<BodyInfo> bodies_;
   std::vector<std::unique_ptr<ConstitutiveModel>> models_;  // by material index; null if unused
-  std::vector<std::int32_t> home_slot_;                     // scratch, per particle
-  std::vector<std::uint8_t> leaving_;                       // scratch, per particle
+  std::vector<config::Material> materials_;                 // the scene's, for models made later
+  std::size_t scene_bodies_ = 0;
+  std::vector<NodeLoad> node_loads_;     // for the next advance
+  std::vector<std::int32_t> home_slot_;  // scratch, per particle
+  std::vector<std::uint8_t> leaving_;    // scratch, per particle
   double stable_dt_ = 0.0;
   double time_ = 0.0;
   std::int64_t steps_ = 0;

@@ -27,6 +27,7 @@ void ParticleSet::grow(std::size_t count) {
     lighting_time[p] = -std::numeric_limits<double>::infinity();
     for (auto& f : stretch) f[p] = 1.0;
   }
+  id.resize(n);
   material.resize(n);
   body.resize(n);
 }
@@ -35,6 +36,7 @@ std::size_t ParticleSet::remove_flagged(std::span<const std::uint8_t> flags) {
   const std::size_t before = size();
   for_each_double_array(
       [&](std::vector<double>& a, std::size_t stride) { compact(a, flags, stride); });
+  compact(id, flags, 1);
   compact(material, flags, 1);
   compact(body, flags, 1);
   return before - size();
@@ -69,6 +71,21 @@ MaterialPoint ParticleSet::material_point(std::size_t p, Tensor3& s) {
           damage[p],
           temperature[p],
           std::span<double>(history.data() + p * history_stride, history_stride)};
+}
+
+std::size_t nearest_particle(const ParticleSet& ps, const grid::Vec3& x) {
+  std::size_t best = 0;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    const double dx = ps.position[0][p] - x[0], dy = ps.position[1][p] - x[1],
+                 dz = ps.position[2][p] - x[2];
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best = p;
+    }
+  }
+  return best;
 }
 
 }  // namespace mpfd::mpm

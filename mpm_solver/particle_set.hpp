@@ -12,12 +12,16 @@
 #include <span>
 #include <vector>
 
+#include "common/grid/uniform_grid.hpp"
 #include "mpm_solver/material/constitutive_model.hpp"
 
 namespace mpfd::mpm {
 
 /// Components of the symmetric deviator, in this order (docs/output.md).
 enum StressComponent : std::size_t { kXX, kYY, kZZ, kXY, kYZ, kZX };
+
+/// Ids of the scene's own particles start here (bit 63), above any a coupler assigns.
+inline constexpr std::uint64_t kSceneParticleIdBase = std::uint64_t{1} << 63;
 
 struct ParticleSet {
   std::array<std::vector<double>, 3> position;           ///< x_p [m]
@@ -37,6 +41,9 @@ struct ParticleSet {
   /// F_aa, the diagonal of the deformation gradient, updated by (1 + d eps_aa) each
   /// step (cpGIMP's domain stretch) [-]
   std::array<std::vector<double>, 3> stretch;
+  /// Identity for a coupler (proto/README.md §6): its ids for injected particles,
+  /// 2^63 + generation index for the scene's own.
+  std::vector<std::uint64_t> id;
   std::vector<std::uint16_t> material;  ///< index into Scene::materials
   std::vector<std::uint16_t> body;      ///< index into MpmSolver::bodies()
   std::vector<double> history;          ///< history_stride() scalars per particle
@@ -58,21 +65,35 @@ struct ParticleSet {
   /// tensor copy of the deviator (see deviator()).
   [[nodiscard]] MaterialPoint material_point(std::size_t p, Tensor3& s);
 
-  /// Every per-particle array of doubles, for bulk operations (growth, removal).
+  /// Every per-particle array of doubles, fn(array, values per particle), in a
+  /// fixed order, for bulk operations (growth, removal, checkpoints).
   template <class Fn>
   void for_each_double_array(Fn&& fn) {
-    for (auto& a : position) fn(a, 1);
-    for (auto& a : velocity) fn(a, 1);
-    fn(mass, 1);
-    fn(density, 1);
-    for (auto& a : deviatoric_stress) fn(a, 1);
-    for (auto* a :
-         {&pressure, &bulk_viscosity, &specific_internal_energy, &sound_speed,
-          &equivalent_plastic_strain, &plastic_work, &damage, &temperature, &lighting_time})
+    visit_double_arrays(*this, fn);
+  }
+  template <class Fn>
+  void for_each_double_array(Fn&& fn) const {
+    visit_double_arrays(*this, fn);
+  }
+
+ private:
+  template <class Self, class Fn>
+  static void visit_double_arrays(Self& self, Fn& fn) {
+    for (auto& a : self.position) fn(a, 1);
+    for (auto& a : self.velocity) fn(a, 1);
+    fn(self.mass, 1);
+    fn(self.density, 1);
+    for (auto& a : self.deviatoric_stress) fn(a, 1);
+    for (auto* a : {&self.pressure, &self.bulk_viscosity, &self.specific_internal_energy,
+                    &self.sound_speed, &self.equivalent_plastic_strain, &self.plastic_work,
+                    &self.damage, &self.temperature, &self.lighting_time})
       fn(*a, 1);
-    for (auto& a : stretch) fn(a, 1);
-    fn(history, history_stride);
+    for (auto& a : self.stretch) fn(a, 1);
+    fn(self.history, self.history_stride);
   }
 };
+
+/// Index of the particle nearest to x (a gauge is an Eulerian point); 0 when there is none.
+[[nodiscard]] std::size_t nearest_particle(const ParticleSet& ps, const grid::Vec3& x);
 
 }  // namespace mpfd::mpm

@@ -41,6 +41,15 @@ std::int32_t SparseGrid::activate(const grid::Index3& lo, const grid::Index3& hi
   return table_[block_id(b0[0], b0[1], b0[2])];
 }
 
+std::ptrdiff_t SparseGrid::find_node(const grid::Index3& storage) const {
+  for (int a = 0; a < 3; ++a)
+    if (storage[a] < 0 || (storage[a] >> shift_[a]) >= blocks_[a]) return -1;
+  if (table_[block_id(storage[0] >> shift_[0], storage[1] >> shift_[1], storage[2] >> shift_[2])] <
+      0)
+    return -1;
+  return static_cast<std::ptrdiff_t>(node(storage[0], storage[1], storage[2]));
+}
+
 void SparseGrid::allocate_nodes() {
   const std::size_t n = node_count();
   if (mass.size() < n) {  // warm-up only: the arrays keep their largest size

@@ -53,6 +53,9 @@ class SparseGrid {
            static_cast<std::size_t>(
                (i & mask_[0]) + block_dim_[0] * ((j & mask_[1]) + block_dim_[1] * (k & mask_[2])));
   }
+  /// Like node(), for any storage coordinate: -1 when its block is not active
+  /// (or lies outside the grid's ghost layer).
+  [[nodiscard]] std::ptrdiff_t find_node(const grid::Index3& storage) const;
   /// Slot of the active block with block coordinates (bi, bj, bk).
   [[nodiscard]] std::int32_t slot(int bi, int bj, int bk) const {
     return table_[block_id(bi, bj, bk)];

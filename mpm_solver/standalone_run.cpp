@@ -31,22 +31,6 @@ long long peak_memory_bytes() {
   return 1024LL * usage.ru_maxrss;  // Linux reports kilobytes
 }
 
-/// Index of the particle nearest to x (a gauge is an Eulerian point).
-std::size_t nearest_particle(const ParticleSet& ps, const grid::Vec3& x) {
-  std::size_t best = 0;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  for (std::size_t p = 0; p < ps.size(); ++p) {
-    const double dx = ps.position[0][p] - x[0], dy = ps.position[1][p] - x[1],
-                 dz = ps.position[2][p] - x[2];
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best = p;
-    }
-  }
-  return best;
-}
-
 }  // namespace
 
 void run_standalone(const config::Scene& scene, const RunOptions& options) {

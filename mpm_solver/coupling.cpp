@@ -1,0 +1,203 @@
+// The MpmSolver members a coupler uses (mpm_solver.hpp, "Coupling"):
+// particle injection and removal, nodal state and contributions, restore.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/core/error.hpp"
+#include "mpm_solver/mpm_solver.hpp"
+
+namespace mpfd::mpm {
+
+ConstitutiveModel& MpmSolver::model_for(std::size_t material) {
+  if (!models_[material]) {
+    auto model = make_constitutive_model(materials_[material]);
+    const auto stride = static_cast<std::size_t>(model->history_count());
+    if (stride > particles_.history_stride) {  // re-lay the history at the wider stride
+      const std::size_t old = particles_.history_stride;
+      std::vector<double> wider(particles_.size() * stride, 0.0);
+      for (std::size_t p = 0; p < particles_.size(); ++p)
+        std::copy_n(particles_.history.begin() + static_cast<std::ptrdiff_t>(p * old), old,
+                    wider.begin() + static_cast<std::ptrdiff_t>(p * stride));
+      particles_.history = std::move(wider);
+      particles_.history_stride = stride;
+    }
+    models_[material] = std::move(model);
+  }
+  return *models_[material];
+}
+
+std::uint16_t MpmSolver::injected_body(std::size_t material) {
+  for (std::size_t b = scene_bodies_; b < bodies_.size(); ++b)
+    if (bodies_[b].material == material) return static_cast<std::uint16_t>(b);
+  constexpr int per_axis = 2;  // T §4.3: 2 x 2 x 2 particles per injected cell (4-15)
+  BodyInfo body;
+  body.name = "injected " + materials_[material].name;
+  body.material = material;
+  body.particles_per_axis = per_axis;
+  for (int a = 0; a < 3; ++a) body.half_width[a] = grid().is_active(a) ? 0.5 / per_axis : 0.5;
+  body.characteristic_length = min_spacing_ / per_axis;
+  body.burn_rate = 0.0;  // inert: lighting time -inf, F = 1
+  bodies_.push_back(body);
+  return static_cast<std::uint16_t>(bodies_.size() - 1);
+}
+
+void MpmSolver::inject_particles(const ParticleBatch& batch) {
+  const std::size_t n = batch.size();
+  const bool with_stress = !batch.stress.empty();
+  const auto& g = grid();
+  const grid::Vec3 upper = g.upper();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string which =
+        "injected particle " + std::to_string(i) + " (id " + std::to_string(batch.id[i]) + ")";
+    if (!(batch.mass[i] > 0.0) || !std::isfinite(batch.mass[i]) || !(batch.volume[i] > 0.0) ||
+        !std::isfinite(batch.volume[i]))
+      throw Error(which + ": mass and volume must be positive and finite, got " +
+                  std::to_string(batch.mass[i]) + " kg, " + std::to_string(batch.volume[i]) +
+                  " m^3");
+    if (batch.material[i] >= materials_.size())
+      throw Error(which + ": material " + std::to_string(batch.material[i]) +
+                  " is not one of the scene's " + std::to_string(materials_.size()));
+    for (int a = 0; a < 3; ++a) {
+      const double x = batch.position[3 * i + static_cast<std::size_t>(a)];
+      if (!std::isfinite(x) || (g.is_active(a) && (x < g.origin()[a] || x >= upper[a])))
+        throw Error(which + ": position " + std::to_string(x) + " m on axis " + std::to_string(a) +
+                    " is off the grid [" + std::to_string(g.origin()[a]) + ", " +
+                    std::to_string(upper[a]) + ")");
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) model_for(batch.material[i]);  // may throw: before growing
+  const std::size_t first = particles_.size();
+  particles_.grow(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t p = first + i;
+    const std::size_t m = batch.material[i];
+    const ConstitutiveModel& model = *models_[m];
+    particles_.id[p] = batch.id[i];
+    particles_.material[p] = static_cast<std::uint16_t>(m);
+    particles_.body[p] = injected_body(m);
+    for (std::size_t a = 0; a < 3; ++a) {
+      particles_.position[a][p] = batch.position[3 * i + a];
+      particles_.velocity[a][p] = batch.velocity[3 * i + a];
+    }
+    particles_.mass[p] = batch.mass[i];
+    particles_.density[p] = batch.mass[i] / batch.volume[i];
+    particles_.specific_internal_energy[p] = batch.internal_energy[i] / batch.mass[i];
+    Tensor3 s = Tensor3::Zero();
+    MaterialPoint point = particles_.material_point(p, s);
+    model.initialise(particles_.density[p], point);
+    particles_.set_deviator(p, s);
+    if (with_stress) {
+      const double* sigma = &batch.stress[kVoigt * i];
+      const double pressure = -(sigma[0] + sigma[1] + sigma[2]) / 3.0;
+      particles_.pressure[p] = pressure;
+      for (std::size_t c = 0; c < kVoigt; ++c)
+        particles_.deviatoric_stress[kFromVoigt[c]][p] = sigma[c] + (c < 3 ? pressure : 0.0);
+    }
+  }
+  compute_stable_dt();
+}
+
+ParticleBatch MpmSolver::remove_particles(std::span<const std::uint8_t> flags) {
+  auto& ps = particles_;
+  ParticleBatch out;
+  out.resize(static_cast<std::size_t>(
+      std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; })));
+  std::size_t i = 0;
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    if (flags[p] == 0) continue;
+    out.id[i] = ps.id[p];
+    for (std::size_t a = 0; a < 3; ++a) {
+      out.position[3 * i + a] = ps.position[a][p];
+      out.velocity[3 * i + a] = ps.velocity[a][p];
+    }
+    out.mass[i] = ps.mass[p];
+    out.volume[i] = ps.mass[p] / ps.density[p];
+    out.internal_energy[i] = ps.mass[p] * ps.specific_internal_energy[p];
+    out.material[i] = ps.material[p];
+    const double pq = ps.pressure[p] + ps.bulk_viscosity[p];  // sigma = s - (p + q) I
+    for (std::size_t c = 0; c < kVoigt; ++c)
+      out.stress[kVoigt * i + c] = ps.deviatoric_stress[kFromVoigt[c]][p] - (c < 3 ? pq : 0.0);
+    ++i;
+  }
+  if (i > 0) {
+    ps.remove_flagged(flags);
+    compute_stable_dt();
+  }
+  return out;
+}
+
+void MpmSolver::map_particles_to_nodes() {
+  rebuild_grid();
+  particles_to_grid();
+}
+
+NodeState MpmSolver::node_state(const grid::Index3& node) const {
+  grid::Index3 storage{};
+  for (int a = 0; a < 3; ++a) storage[a] = node[a] + grid_.offset()[a];
+  const std::ptrdiff_t n = grid_.find_node(storage);
+  if (n < 0) return {};
+  const auto i = static_cast<std::size_t>(n);
+  return {grid_.mass[i], {grid_.momentum[0][i], grid_.momentum[1][i], grid_.momentum[2][i]}};
+}
+
+void MpmSolver::queue_node_load(const NodeLoad& load) {
+  const auto& g = grid();
+  for (int a = 0; a < 3; ++a) {
+    const int last = g.is_active(a) ? g.cells()[a] : 0;
+    if (load.node[a] < 0 || load.node[a] > last)
+      throw Error("node load at node (" + std::to_string(load.node[0]) + ", " +
+                  std::to_string(load.node[1]) + ", " + std::to_string(load.node[2]) + "): axis " +
+                  std::to_string(a) + " needs 0 <= index <= " + std::to_string(last));
+  }
+  node_loads_.push_back(load);
+}
+
+void MpmSolver::apply_node_loads() {
+  for (const NodeLoad& load : node_loads_) {
+    const auto n = static_cast<std::size_t>(grid_.node(load.node[0] + grid_.offset()[0],
+                                                       load.node[1] + grid_.offset()[1],
+                                                       load.node[2] + grid_.offset()[2]));
+    if (load.quantity == NodeLoad::Quantity::mass) {
+      grid_.mass[n] = load.overwrite ? load.value[0] : grid_.mass[n] + load.value[0];
+      continue;
+    }
+    auto& field = load.quantity == NodeLoad::Quantity::momentum ? grid_.momentum : grid_.force;
+    for (int a = 0; a < 3; ++a)
+      field[a][n] = load.overwrite ? load.value[a] : field[a][n] + load.value[a];
+  }
+  node_loads_.clear();
+}
+
+void MpmSolver::restore(ParticleSet particles, std::span<const std::size_t> injected_body_materials,
+                        double time, std::int64_t steps, const BoundaryLedger& ledger,
+                        double particle_updates) {
+  for (const std::size_t m : injected_body_materials)
+    if (m >= materials_.size())
+      throw Error("restore: an injected body has material " + std::to_string(m) +
+                  "; the scene has " + std::to_string(materials_.size()));
+  const std::size_t bodies = scene_bodies_ + injected_body_materials.size();
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    if (particles.body[p] >= bodies || particles.material[p] >= materials_.size())
+      throw Error("restore: particle " + std::to_string(p) + " has body " +
+                  std::to_string(particles.body[p]) + " and material " +
+                  std::to_string(particles.material[p]) + "; there are " + std::to_string(bodies) +
+                  " bodies and " + std::to_string(materials_.size()) + " materials");
+  // Models only widen the running particles' history (same values): the state is unchanged.
+  for (std::size_t p = 0; p < particles.size(); ++p) model_for(particles.material[p]);
+  if (particles.history_stride != particles_.history_stride)
+    throw Error("restore: the particles keep " + std::to_string(particles.history_stride) +
+                " history values each; this scene's models keep " +
+                std::to_string(particles_.history_stride));
+  bodies_.resize(scene_bodies_);
+  for (const std::size_t m : injected_body_materials) injected_body(m);  // one per material
+  particles_ = std::move(particles);
+  time_ = time;
+  steps_ = steps;
+  ledger_ = ledger;
+  particle_updates_ = particle_updates;
+  node_loads_.clear();
+  compute_stable_dt();
+}
+
+}  // namespace mpfd::mpm

@@ -1,0 +1,40 @@
+#pragma once
+// The contents of an MPM checkpoint file: every ParticleSet array (doubles in
+// ParticleSet::for_each_double_array order, ids split in two exact halves),
+// the materials of the injected bodies, clock, step, ledger and the scene
+// text, written and read back checked against the running zone.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mpm_solver/serve/served_zone.hpp"
+
+namespace mpfd::mpm {
+
+inline constexpr const char* kCheckpointFormat = "mpfd-mpm-checkpoint";
+inline constexpr std::int64_t kCheckpointVersion = 1;
+
+/// Writes the zone's whole restart state to `file` (created or overwritten).
+void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone);
+
+/// A checkpoint read back: what MpmSolver::restore takes.
+struct CheckpointContents {
+  ParticleSet particles;
+  std::vector<std::size_t> injected_body_materials;
+  double solver_time = 0.0;
+  std::int64_t steps = 0;
+  BoundaryLedger ledger;
+  double particle_updates = 0.0;
+  std::string scene_text;
+};
+
+/// Reads `file` for `zone` at the Restore request's `step`. Throws a
+/// non-fatal ProtocolError{IO} naming the file and what mismatched (format,
+/// version, grid cells, materials, an array's size, step, start_time) and
+/// mpfd::Error if HDF5 cannot read it.
+[[nodiscard]] CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
+                                                      const ServedZone& zone, std::uint64_t step);
+
+}  // namespace mpfd::mpm

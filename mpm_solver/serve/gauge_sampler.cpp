@@ -1,0 +1,69 @@
+#include "mpm_solver/serve/gauge_sampler.hpp"
+
+#include <array>
+#include <string_view>
+
+#include "cosim/arrays.hpp"
+#include "fdm_solver/serve/protocol_error.hpp"
+
+namespace mpfd::mpm {
+namespace {
+
+using fdm::ProtocolError;
+
+struct GaugeQuantity {
+  std::string_view name;
+  std::string_view units;
+  double (*read)(const ParticleSet&, std::size_t);
+};
+
+constexpr std::array<GaugeQuantity, 6> kQuantities = {{
+    {"density", "kg/m^3", [](const ParticleSet& ps, std::size_t p) { return ps.density[p]; }},
+    {"pressure", "Pa", [](const ParticleSet& ps, std::size_t p) { return ps.pressure[p]; }},
+    {"velocity_x", "m/s", [](const ParticleSet& ps, std::size_t p) { return ps.velocity[0][p]; }},
+    {"velocity_y", "m/s", [](const ParticleSet& ps, std::size_t p) { return ps.velocity[1][p]; }},
+    {"velocity_z", "m/s", [](const ParticleSet& ps, std::size_t p) { return ps.velocity[2][p]; }},
+    {"specific_internal_energy", "J/kg",
+     [](const ParticleSet& ps, std::size_t p) { return ps.specific_internal_energy[p]; }},
+}};
+
+const GaugeQuantity& find(const std::string& name) {
+  for (const auto& q : kQuantities)
+    if (q.name == name) return q;
+  std::string known;
+  for (const auto& q : kQuantities) known += (known.empty() ? "" : ", ") + std::string(q.name);
+  throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                      "SampleGauges: unknown quantity '" + name + "'; known: " + known);
+}
+
+}  // namespace
+
+std::uint64_t sample_gauges(const MpmSolver& solver, const cosim::v1::SampleGauges& request,
+                            cosim::Message& reply) {
+  const auto gauges = static_cast<std::size_t>(request.gauge_names_size());
+  if (static_cast<std::size_t>(request.positions_size()) != 3 * gauges)
+    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
+                        "SampleGauges group '" + request.group() + "': " + std::to_string(gauges) +
+                            " gauges need " + std::to_string(3 * gauges) +
+                            " position values (x, y, z each), got " +
+                            std::to_string(request.positions_size()));
+  const ParticleSet& ps = solver.particles();
+  if (ps.size() == 0 && gauges > 0)
+    throw ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "SampleGauges group '" + request.group() + "': the MPM zone holds no particle to read");
+  std::vector<std::size_t> nearest(gauges);
+  for (std::size_t g = 0; g < gauges; ++g)
+    nearest[g] = nearest_particle(ps, {request.positions(static_cast<int>(3 * g)),
+                                       request.positions(static_cast<int>(3 * g + 1)),
+                                       request.positions(static_cast<int>(3 * g + 2))});
+  for (const auto& name : request.quantities()) {
+    const GaugeQuantity& q = find(name);
+    std::vector<double> values(gauges);
+    for (std::size_t g = 0; g < gauges; ++g) values[g] = q.read(ps, nearest[g]);
+    cosim::add_array(reply, {request.group(), q.name, {}, q.units}, std::move(values));
+  }
+  return gauges;
+}
+
+}  // namespace mpfd::mpm

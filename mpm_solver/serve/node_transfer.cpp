@@ -1,0 +1,153 @@
+#include "mpm_solver/serve/node_transfer.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include "cosim/arrays.hpp"
+#include "fdm_solver/serve/protocol_error.hpp"
+
+namespace mpfd::mpm {
+namespace {
+
+using fdm::ProtocolError;
+
+[[noreturn]] void reject(cosim::v1::ErrorCode code, const ZoneRegion& region,
+                         std::string_view quantity, const std::string& rule) {
+  throw ProtocolError(
+      code, "region '" + region.name + "', quantity '" + std::string(quantity) + "': " + rule);
+}
+
+/// Components per node of an apply quantity; 0 when it cannot be applied.
+std::size_t apply_components(std::string_view name) {
+  if (name == "mass") return 1;
+  if (name == "momentum" || name == "internal_force") return 3;
+  return 0;
+}
+
+NodeLoad::Quantity load_quantity(std::string_view name) {
+  if (name == "mass") return NodeLoad::Quantity::mass;
+  return name == "momentum" ? NodeLoad::Quantity::momentum : NodeLoad::Quantity::force;
+}
+
+void check_apply_array(const ZoneRegion& region, const cosim::v1::ArrayDescriptor& array,
+                       std::vector<std::string>& seen) {
+  const std::size_t components = apply_components(array.name());
+  if (components == 0)
+    reject(cosim::v1::ERROR_CODE_MALFORMED, region, array.name(),
+           "ApplyRegion on nodes accepts only mass, momentum and internal_force");
+  if (!region.declares(array.name()))
+    reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, region, array.name(),
+           "not declared for it in Setup");
+  if (std::find(seen.begin(), seen.end(), array.name()) != seen.end())
+    reject(cosim::v1::ERROR_CODE_MALFORMED, region, array.name(), "given twice");
+  seen.push_back(array.name());
+  if (array.dtype() != cosim::v1::DTYPE_F64)
+    reject(cosim::v1::ERROR_CODE_MALFORMED, region, array.name(),
+           "dtype must be DTYPE_F64, got " + cosim::v1::DType_Name(array.dtype()));
+  std::uint64_t count = 1;
+  for (const auto extent : array.shape()) count *= extent;
+  const std::size_t expected = region.box_count() * components;
+  if (count != expected)
+    reject(cosim::v1::ERROR_CODE_MALFORMED, region, array.name(),
+           "expected " + std::to_string(expected) + " values (" +
+               std::to_string(region.box_count()) + " nodes x " + std::to_string(components) +
+               " components), got " + std::to_string(count));
+}
+
+/// Sum of m_p e_p per cell of the region's node box, in box C order.
+std::vector<double> cell_internal_energy(const MpmSolver& solver, const ZoneRegion& region) {
+  const auto& g = solver.grid();
+  grid::Index3 lo = region.lo, hi = region.hi, extent{};
+  for (int a = 0; a < 3; ++a) {
+    if (g.is_active(a)) --hi[a];
+    extent[a] = hi[a] - lo[a];
+  }
+  std::vector<double> energy(region.cell_count(g), 0.0);
+  const ParticleSet& ps = solver.particles();
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    grid::Index3 cell{};
+    bool inside = true;
+    for (int a = 0; a < 3 && inside; ++a) {
+      cell[a] =
+          g.is_active(a)
+              ? static_cast<int>(std::floor((ps.position[a][p] - g.origin()[a]) / g.spacing()[a]))
+              : 0;
+      inside = cell[a] >= lo[a] && cell[a] < hi[a];
+    }
+    if (!inside) continue;
+    const std::size_t n = static_cast<std::size_t>((cell[0] - lo[0]) * extent[1] * extent[2] +
+                                                   (cell[1] - lo[1]) * extent[2] + cell[2] - lo[2]);
+    energy[n] += ps.mass[p] * ps.specific_internal_energy[p];
+  }
+  return energy;
+}
+
+}  // namespace
+
+void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
+                       cosim::v1::ApplyRegion::Mode mode, const cosim::Message& request) {
+  if (region.kind != cosim::v1::REGION_KIND_NODES)
+    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                        "ApplyRegion on region '" + region.name +
+                            "': only NODES regions of an MPM zone take values (particles come "
+                            "through InjectParticles)");
+  if (mode != cosim::v1::ApplyRegion::MODE_SET && mode != cosim::v1::ApplyRegion::MODE_ADD)
+    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, "ApplyRegion on region '" + region.name +
+                                                             "' needs mode MODE_SET or MODE_ADD");
+  std::vector<std::string> seen;
+  for (const auto& array : request.header.arrays())
+    if (array.group() == region.name) check_apply_array(region, array, seen);
+  if (seen.empty())
+    throw ProtocolError(cosim::v1::ERROR_CODE_MALFORMED, "ApplyRegion on region '" + region.name +
+                                                             "' carries no array of group '" +
+                                                             region.name + "'");
+  for (const auto& array : request.header.arrays()) {
+    if (array.group() != region.name) continue;
+    const std::size_t components = apply_components(array.name());
+    const cosim::ArrayView<double> view(array, request.frames.at(array.frame_index()));
+    const auto values = view.values();
+    for_each_box_index(region.lo, region.hi, [&](std::size_t n, const grid::Index3& node) {
+      NodeLoad load{
+          node, load_quantity(array.name()), mode == cosim::v1::ApplyRegion::MODE_SET, {}};
+      for (std::size_t c = 0; c < components; ++c) load.value[c] = values[n * components + c];
+      solver.queue_node_load(load);
+    });
+  }
+}
+
+std::uint64_t export_node_region(MpmSolver& solver, const ZoneRegion& region,
+                                 const cosim::v1::ExportRegion& request, cosim::Message& reply) {
+  std::vector<std::string> names(request.quantities().begin(), request.quantities().end());
+  if (names.empty()) names = region.quantities;
+  for (const auto& name : names)
+    if (!region.declares(name) || name == "internal_force")
+      reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, region, name,
+             name == "internal_force" ? "is applied, not exported"
+                                      : "not declared for it in Setup, so it cannot be exported");
+  solver.map_particles_to_nodes();
+  const std::size_t count = region.box_count();
+  for (const auto& name : names) {
+    if (name == "internal_energy") {
+      cosim::add_array(reply, {region.name, name, {}, "J"}, cell_internal_energy(solver, region));
+      continue;
+    }
+    const bool mass = name == "mass";
+    std::vector<double> values(count * (mass ? 1 : 3));
+    for_each_box_index(region.lo, region.hi, [&](std::size_t n, const grid::Index3& node) {
+      const NodeState state = solver.node_state(node);
+      if (mass) {
+        values[n] = state.mass;
+      } else {
+        for (std::size_t a = 0; a < 3; ++a) values[3 * n + a] = state.momentum[a];
+      }
+    });
+    if (mass) {
+      cosim::add_array(reply, {region.name, name, {}, "kg"}, std::move(values));
+    } else {
+      cosim::add_array(reply, {region.name, name, {count, 3}, "kg*m/s"}, std::move(values));
+    }
+  }
+  return count;
+}
+
+}  // namespace mpfd::mpm

@@ -1,0 +1,30 @@
+#pragma once
+// ApplyRegion and ExportRegion of protocol v1 (proto/README.md §6) on a NODES
+// region of the MPM zone: arrays of group `region`, F64, [n] or [n, 3] in box
+// C order (zone_region.hpp).
+
+#include <cstdint>
+
+#include "cosim/message.hpp"
+#include "mpm_solver/mpm_solver.hpp"
+#include "mpm_solver/serve/zone_region.hpp"
+
+namespace mpfd::mpm {
+
+/// Queues (MpmSolver::queue_node_load) every array of group region.name:
+/// mass [n] kg, momentum [n, 3] kg m/s, internal_force [n, 3] N; SET
+/// replaces the mapped value at the next advance, ADD adds to it (T (4-7)...
+/// (4-9)). All arrays are checked before any is queued. Throws
+/// ProtocolError{MALFORMED or UNKNOWN_REGION} naming region, quantity,
+/// expected and got.
+void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
+                       cosim::v1::ApplyRegion::Mode mode, const cosim::Message& request);
+
+/// Maps the particles to the nodes first, then appends one array per asked
+/// quantity (none asked: the region's): mass, momentum of each node, and
+/// internal_energy, sum of m_p e_p over the particles in each cell of
+/// ZoneRegion::cell_count [J]. Returns the node count.
+std::uint64_t export_node_region(MpmSolver& solver, const ZoneRegion& region,
+                                 const cosim::v1::ExportRegion& request, cosim::Message& reply);
+
+}  // namespace mpfd::mpm

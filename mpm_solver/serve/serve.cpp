@@ -1,0 +1,143 @@
+#include "mpm_solver/serve/serve.hpp"
+
+#include <unistd.h>
+
+#include <memory>
+
+#include "common/core/log.hpp"
+#include "cosim/participant.hpp"
+#include "fdm_solver/serve/protocol_error.hpp"
+#include "mpm_solver/serve/checkpoint.hpp"
+#include "mpm_solver/serve/exchange.hpp"
+#include "mpm_solver/serve/served_zone.hpp"
+#include "mpm_solver/serve/write_output.hpp"
+
+namespace mpfd::mpm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using fdm::ProtocolError;
+
+cosim::v1::Hello hello() {
+  cosim::v1::Hello hello;
+  hello.set_role(cosim::v1::ROLE_MPM_SOLVER);
+  hello.set_software("mpfd mpm_solver");
+  hello.set_min_major(cosim::protocol_major);
+  hello.set_max_major(cosim::protocol_major);
+  for (const char* capability :
+       {"node_regions", "particles", "gauges", "write_output", "checkpoint"})
+    hello.add_capabilities(capability);
+  hello.set_pid(static_cast<std::uint32_t>(::getpid()));
+  char host[256] = {};
+  if (::gethostname(host, sizeof host - 1) == 0) hello.set_host(host);
+  return hello;
+}
+
+/// A request a dormant zone may not get before Activate (proto/README.md §5).
+void require_awake(const ServedZone& zone, std::string_view body) {
+  if (zone.dormant)
+    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                        "'" + std::string(body) +
+                            "' to a dormant MPM zone; send Activate first (proto/README.md §5)");
+}
+
+/// The reply to any request but Shutdown (and Ping, which Participant answers).
+cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& request) {
+  const auto& header = request.header;
+  const std::string_view body = cosim::body_name(header);
+  if (header.has_field_export() || header.has_field_chunk() || header.has_field_import_commit())
+    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                        "mpm_solver serve does not support '" + std::string(body) +
+                            "' (not in its Hello capabilities); the solver carries on",
+                        false);
+  if (!header.has_setup() && !header.has_exchange() && !header.has_write_output() &&
+      !header.has_checkpoint() && !header.has_restore() && !header.has_activate())
+    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                        "'" + std::string(body) + "' is not a request to a solver");
+  if (header.has_setup() == (zone != nullptr))
+    throw ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
+                        zone ? "a second Setup" : "'" + std::string(body) + "' before Setup");
+  cosim::Message reply;
+  if (header.has_setup()) {
+    zone = set_up_zone(header.setup());
+    *reply.header.mutable_setup_ack() = setup_ack(header.setup(), *zone);
+    Logger("mpm.serve")
+        .info("scene '", zone->scene.name, "' set up: ", zone->solver.particles().size(),
+              " particles, ", zone->regions.size(), " regions, stable dt ",
+              reply.header.setup_ack().stable_dt(), " s", zone->dormant ? ", dormant" : "");
+  } else if (header.has_activate()) {
+    zone->dormant = false;
+    reply.header.mutable_activate_ack()->set_stable_dt(zone->solver.stable_dt());
+  } else if (header.has_exchange()) {
+    reply = run_exchange(*zone, request);
+  } else if (header.has_write_output()) {
+    require_awake(*zone, body);
+    *reply.header.mutable_output_written() = write_output(*zone, header.write_output());
+  } else if (header.has_checkpoint()) {
+    require_awake(*zone, body);
+    *reply.header.mutable_checkpoint_written() = write_checkpoint(*zone, header.checkpoint());
+  } else {
+    *reply.header.mutable_restored() = restore_checkpoint(*zone, header.restore());
+  }
+  return reply;
+}
+
+/// Answers `request` with Error. A fatal one is sent best effort (the coupler
+/// may be gone) and then thrown, naming the code and the coupler.
+void report_error(cosim::Participant& participant, const cosim::Message& request,
+                  cosim::v1::ErrorCode code, const std::string& text, bool fatal) {
+  if (fatal) {
+    participant.send_error(&request, code, text);
+    throw Error("mpm_solver serve: stopped after reporting " + cosim::v1::ErrorCode_Name(code) +
+                " to the coupler at " + participant.coupler_endpoint() + ": " + text);
+  }
+  cosim::Message reply;
+  auto& error = *reply.header.mutable_error();
+  error.set_code(code);
+  error.set_message(text);
+  error.set_fatal(false);
+  participant.reply(request, std::move(reply));
+}
+
+}  // namespace
+
+void serve(zmq::context_t& context, const ServeOptions& options) {
+  const Logger logger("mpm.serve");
+  const auto start = Clock::now();
+  cosim::TransportOptions transport;
+  transport.idle_timeout = options.idle_timeout;
+  cosim::Participant participant(context, options.endpoint, options.name, transport);
+  const cosim::v1::HelloAck session = participant.connect(hello());
+  if (session.major() != cosim::protocol_major) {
+    const std::string text = "the coupler chose protocol v" + std::to_string(session.major()) +
+                             "; solver '" + options.name + "' speaks v" +
+                             std::to_string(cosim::protocol_major);
+    participant.send_error(nullptr, cosim::v1::ERROR_CODE_VERSION_MISMATCH, text);
+    throw Error("mpm_solver serve: " + text + " (coupler at " + options.endpoint + ")");
+  }
+  logger.info("'", options.name, "' connected to ", options.endpoint, ", run ", session.run_id());
+
+  std::unique_ptr<ServedZone> zone;
+  while (true) {
+    const cosim::Message request = participant.receive();
+    if (request.header.has_shutdown()) {
+      const auto steps = zone ? static_cast<std::uint64_t>(zone->solver.steps()) : 0U;
+      cosim::Message reply;
+      reply.header.mutable_shutdown_ack()->set_steps_done(steps);
+      reply.header.mutable_shutdown_ack()->set_wall_seconds(
+          std::chrono::duration<double>(Clock::now() - start).count());
+      participant.reply(request, std::move(reply));
+      logger.info("shut down (", request.header.shutdown().reason(), ") after ", steps, " steps");
+      return;
+    }
+    try {
+      participant.reply(request, answer(zone, request));
+    } catch (const ProtocolError& error) {
+      report_error(participant, request, error.code(), error.what(), error.fatal());
+    } catch (const std::exception& error) {
+      report_error(participant, request, cosim::v1::ERROR_CODE_INTERNAL, error.what(), true);
+    }
+  }
+}
+
+}  // namespace mpfd::mpm

@@ -1,0 +1,50 @@
+#pragma once
+// The MPM zone a coupler set up (proto/README.md §5 Setup): the scene, the
+// solver built from it, the named node and particle regions, the snapshot
+// writer, and whether the zone still sleeps (Zone.dormant until Activate).
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "common/config/scene.hpp"
+#include "common/io/snapshot_writer.hpp"
+#include "cosim/message.hpp"
+#include "mpm_solver/mpm_solver.hpp"
+#include "mpm_solver/serve/zone_region.hpp"
+#include "mpm_solver/snapshot_particles.hpp"
+
+namespace mpfd::mpm {
+
+struct ServedZone {
+  ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup);
+
+  config::Scene scene;
+  std::string scene_text;            ///< Setup.scene_fragment, kept for checkpoints
+  std::filesystem::path output_dir;  ///< Setup.output_dir (may be empty)
+  MpmSolver solver;
+  std::map<std::string, ZoneRegion, std::less<>> regions;
+  double start_time;
+  bool dormant;
+  std::optional<io::SnapshotWriter> snapshots;  // made at the first WriteOutput
+  SnapshotParticles snapshot_fields;
+
+  /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
+  [[nodiscard]] double time() const { return start_time + solver.time(); }
+  /// The region called `name`; throws ProtocolError{UNKNOWN_REGION} listing the known ones.
+  [[nodiscard]] const ZoneRegion& region(const std::string& name, std::string_view operation) const;
+};
+
+/// Builds the zone of a Setup: zone kind MPM (or unspecified), scene_fragment
+/// (YAML or JSON) through parse_scene (its domain is the zone's background
+/// grid, its bodies the zone's particles; solver.method is not read), the zone grid
+/// (if given) checked against the scene's cells, every region checked
+/// (zone_region.hpp). Throws ProtocolError.
+[[nodiscard]] std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup);
+
+/// SetupAck: the regions with the quantities served, and the first stable dt.
+[[nodiscard]] cosim::v1::SetupAck setup_ack(const cosim::v1::Setup& setup, const ServedZone& zone);
+
+}  // namespace mpfd::mpm

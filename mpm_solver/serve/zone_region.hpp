@@ -1,0 +1,59 @@
+#pragma once
+// A named region of the MPM zone declared in Setup (proto/README.md §4, §6
+// CFDMP regions): a half-open box [lo, hi) of background-grid nodes (NODES:
+// ghost_nodes, interface_nodes) or of cells whose particles it holds
+// (PARTICLES: mpm_zone), with the quantities a coupler exchanges through it.
+// Node values travel in box C order over (i, j, k): k fastest.
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/grid/uniform_grid.hpp"
+#include "cosim/message.hpp"
+
+namespace mpfd::mpm {
+
+struct ZoneRegion {
+  std::string name;
+  cosim::v1::RegionKind kind = cosim::v1::REGION_KIND_UNSPECIFIED;
+  grid::Index3 lo{};  ///< node indices (NODES) or cell indices (PARTICLES)
+  grid::Index3 hi{};
+  std::vector<std::string> quantities;
+
+  [[nodiscard]] bool declares(std::string_view quantity) const;
+  /// Nodes (NODES) or cells (PARTICLES) in the box.
+  [[nodiscard]] std::size_t box_count() const;
+  /// Cells whose eight corners are nodes of a NODES box: [lo, hi - 1) on active
+  /// axes (the ghost cells whose centres these nodes' shape functions reach).
+  [[nodiscard]] std::size_t cell_count(const grid::UniformGrid& grid) const;
+};
+
+/// The quantities each kind serves: export-only, apply-only and both.
+/// NODES: mass, momentum (export, apply), internal_force (apply),
+/// internal_energy (export, per cell of cell_count). PARTICLES: id,
+/// position, velocity, mass, volume, internal_energy, material, stress,
+/// burn_fraction (export).
+[[nodiscard]] bool node_quantity_known(std::string_view name);
+[[nodiscard]] bool particle_quantity_known(std::string_view name);
+
+/// Checks a Setup region against the zone's grid: kind NODES or PARTICLES,
+/// a box of 1 to 3 axes (left-out axes must have one cell), 0 <= lo < hi <=
+/// cells (+1 for nodes on an active axis), known quantities (none given:
+/// mass, momentum for nodes; id, position, velocity, mass, volume,
+/// internal_energy, material for particles). Throws
+/// ProtocolError{UNKNOWN_REGION} naming the region, its box and the rule.
+[[nodiscard]] ZoneRegion make_zone_region(const cosim::v1::Region& region,
+                                          const grid::UniformGrid& grid);
+
+/// Calls f(n, i, j, k) for each index of the box [lo, hi), n in C order (k fastest).
+template <typename F>
+void for_each_box_index(const grid::Index3& lo, const grid::Index3& hi, F&& f) {
+  std::size_t n = 0;
+  for (int i = lo[0]; i < hi[0]; ++i)
+    for (int j = lo[1]; j < hi[1]; ++j)
+      for (int k = lo[2]; k < hi[2]; ++k) f(n++, grid::Index3{i, j, k});
+}
+
+}  // namespace mpfd::mpm

@@ -1,0 +1,132 @@
+// `mpm_solver serve` stepped by a coupler gives the same particles, bit for
+// bit, as MpmSolver advanced directly with the same dt, over inproc and ipc;
+// exports between steps do not disturb the step; WriteOutput and Shutdown.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "common/config/scene_loader.hpp"
+#include "mpm_solver/mpm_solver.hpp"
+#include "tests/unit/mpm_solver/serve/serve_harness.hpp"
+
+namespace mpfd::mpm {
+namespace {
+
+using namespace testing;
+
+/// cfdmp_regions() and "all": every particle of the grid.
+std::vector<v1::Region> regions_with_all() {
+  auto regions = cfdmp_regions();
+  regions.push_back(region("all", v1::REGION_KIND_PARTICLES, {0, 0, 0}, {16, 16, 1},
+                           {"id", "position", "velocity", "mass", "internal_energy"}));
+  return regions;
+}
+
+class ServeTransport : public ::testing::TestWithParam<cosim::Transport> {};
+
+TEST_P(ServeTransport, TwentyStepsGiveTheDirectSolversParticlesBitForBit) {
+  ServedMpm served(GetParam());
+  const auto ack = served.request(setup(blast_text(), regions_with_all())).header.setup_ack();
+  ASSERT_EQ(ack.regions_size(), 4);
+  EXPECT_EQ(ack.regions(0).quantities_size(), 3);
+
+  const auto scene = config::parse_scene(blast_text(), "blast.yaml");
+  MpmSolver direct(scene, MpmSettings::from_scene(scene));
+  EXPECT_EQ(ack.stable_dt(), direct.stable_dt());
+  double dt = ack.stable_dt();
+  double time = 0.0;
+  cosim::Message last;
+  for (std::uint64_t step = 1; step <= 20; ++step) {
+    served.hub().set_clock(step, time);
+    cosim::Message exchange;
+    add_advance(exchange, dt, time);
+    add_export(exchange, "ghost_nodes");  // maps particles to nodes between steps
+    add_export(exchange, "all");
+    add_propose(exchange);
+    last = served.request(std::move(exchange));
+    direct.advance(dt);
+    time += dt;
+    const auto& results = last.header.exchange_result().results();
+    ASSERT_EQ(results.size(), 4);
+    EXPECT_EQ(results[0].advanced().time(), time);
+    EXPECT_EQ(results[3].proposed().stable_dt(), direct.stable_dt());
+    dt = results[3].proposed().stable_dt();
+  }
+  const ParticleSet& ps = direct.particles();
+  const auto position = array_of(last, "all", "position");
+  const auto velocity = array_of(last, "all", "velocity");
+  const auto id = array_of<std::uint64_t>(last, "all", "id");
+  ASSERT_EQ(id.size(), ps.size());
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    ASSERT_EQ(id[p], ps.id[p]);
+    for (std::size_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(position[3 * p + a], ps.position[a][p]) << "particle " << p;
+      ASSERT_EQ(velocity[3 * p + a], ps.velocity[a][p]) << "particle " << p;
+    }
+  }
+  // Nodal mass of the ghost nodes: the direct solver's (2-12) at the same state.
+  direct.map_particles_to_nodes();
+  const auto mass = array_of(last, "ghost_nodes", "mass");
+  ASSERT_EQ(mass.size(), 3U * 17U);
+  double total = 0.0;
+  for (int i = 3; i < 6; ++i)
+    for (int j = 0; j < 17; ++j) {
+      const double m = mass[static_cast<std::size_t>((i - 3) * 17 + j)];
+      EXPECT_EQ(m, direct.node_state({i, j, 0}).mass);
+      total += m;
+    }
+  EXPECT_GT(total, 0.0);  // particles have spread past x = 0.25
+  EXPECT_EQ(served.shut_down().steps_done(), 20U);
+  EXPECT_EQ(served.stop_reason(), "");
+}
+
+INSTANTIATE_TEST_SUITE_P(InprocAndIpc, ServeTransport,
+                         ::testing::Values(cosim::Transport::inproc, cosim::Transport::ipc));
+
+TEST(MpmServe, WriteOutputWritesAParticleSnapshotIntoTheOutputDir) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("mpfd-mpm-serve-output-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  ServedMpm served;
+  const double dt =
+      served.request(setup(blast_text(), {}, dir.string())).header.setup_ack().stable_dt();
+  cosim::Message exchange;
+  add_advance(exchange, dt, 0.0);
+  served.request(std::move(exchange));
+  cosim::Message output;
+  output.header.mutable_write_output();
+  const auto written = served.request(std::move(output)).header.output_written();
+  ASSERT_EQ(written.files_size(), 2);
+  EXPECT_TRUE(std::filesystem::is_regular_file(written.files(0))) << written.files(0);
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "particles.xmf"));
+  served.shut_down();
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MpmServe, ADormantZoneRefusesAnExchangeUntilActivated) {
+  ServedMpm served;
+  served.request(setup(blast_text(), {}, "", true));
+  cosim::Message activate;
+  activate.header.mutable_activate()->set_reason("test");
+  EXPECT_GT(served.request(std::move(activate)).header.activate_ack().stable_dt(), 0.0);
+  cosim::Message exchange;
+  add_propose(exchange);
+  EXPECT_GT(served.request(std::move(exchange))
+                .header.exchange_result()
+                .results(0)
+                .proposed()
+                .stable_dt(),
+            0.0);
+  served.shut_down();
+
+  ServedMpm asleep;
+  asleep.request(setup(blast_text(), {}, "", true));
+  cosim::Message early;
+  add_propose(early);
+  EXPECT_NE(asleep.refusal(std::move(early)).find("dormant"), std::string::npos);
+  EXPECT_NE(asleep.stop_reason().find("UNEXPECTED"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mpfd::mpm
