@@ -121,6 +121,12 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   add_propose_dt(fdm);
   fdm_ops_.push_back(Op::propose);
 
+  if (!have_ghost_source_) {
+    // Step 0: the MPM filled the scene's bodies over the whole domain; what lies
+    // outside its zone is the FDM's material, so it is dropped, not deposited.
+    add_remove(mpm, "outside", "mpm_zone");
+    mpm_ops_.push_back(Op::discard);
+  }
   if (plan.advance || !have_ghost_source_) {
     add_export(mpm, "ghost_nodes", {"mass", "momentum", "internal_energy"});
     mpm_ops_.push_back(Op::export_ghost);
@@ -302,6 +308,9 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
         have_ghost_source_ = true;
         break;
       }
+      case Op::discard:
+        traffic_.discarded = static_cast<std::size_t>(result.removed().removed());
+        break;
       case Op::remove: {
         const auto n = static_cast<std::size_t>(result.removed().removed());
         traffic_.removed = n;

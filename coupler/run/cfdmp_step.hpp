@@ -46,6 +46,7 @@ struct StepTraffic {
   std::size_t removed = 0;    ///< particles the MPM gave back
   double injected_mass = 0;   ///< kg
   double deposited_mass = 0;  ///< kg, removed particles and returned parcels
+  std::size_t discarded = 0;  ///< step 0: MPM particles outside the MPM zone (the FDM's material)
 };
 
 template <int Dim>
@@ -77,6 +78,7 @@ class CfdmpStep {
     export_strip,
     export_owned,
     export_ghost,
+    discard,
     remove,
     export_particles,
     propose

@@ -177,7 +177,8 @@ class Loop {
     summary_.set_detail("crossing", {{"injected_particles", injected_},
                                      {"removed_particles", removed_},
                                      {"injected_mass_kg", injected_mass_},
-                                     {"deposited_mass_kg", deposited_mass_}});
+                                     {"deposited_mass_kg", deposited_mass_},
+                                     {"discarded_at_start", discarded_}});
     const double overhead =
         step_seconds_ > 0 ? 1.0 - report_.max_advance_seconds / step_seconds_ : 0.0;
     summary_.set_detail("timing", {{"step_seconds", step_seconds_},
@@ -206,6 +207,7 @@ class Loop {
     removed_ += traffic.removed;
     injected_mass_ += traffic.injected_mass;
     deposited_mass_ += traffic.deposited_mass;
+    discarded_ += traffic.discarded;
     return {advance_seconds(replies[0]), advance_seconds(replies[1])};
   }
 
@@ -227,7 +229,7 @@ class Loop {
   Totals initial_;
   CoupledRunReport report_;
   double step_seconds_ = 0;
-  std::uint64_t injected_ = 0, removed_ = 0;
+  std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
   double injected_mass_ = 0, deposited_mass_ = 0;
 };
 

@@ -11,9 +11,22 @@
 #include "common/core/error.hpp"
 #include "common/io/output_directory.hpp"
 #include "coupler/run/zone_layout.hpp"
+#include "fdm_solver/serve/serve.hpp"
+#include "mpm_solver/serve/serve.hpp"
 
 namespace mpfd::coupler {
 namespace {
+
+// Embedded solvers stop at their idle timeout if the coupler vanishes.
+constexpr std::chrono::milliseconds kEmbeddedIdle{60000};
+
+void serve_fdm(zmq::context_t& context, const std::string& endpoint, const std::string& name) {
+  fdm::serve(context, {.endpoint = endpoint, .name = name, .idle_timeout = kEmbeddedIdle});
+}
+
+void serve_mpm(zmq::context_t& context, const std::string& endpoint, const std::string& name) {
+  mpm::serve(context, {.endpoint = endpoint, .name = name, .idle_timeout = kEmbeddedIdle});
+}
 
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -67,10 +80,6 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
     fdm_program = program(launch.fdm_program, self, "fdm_solver");
     mpm_program = program(launch.mpm_program, self, "mpm_solver");
   }
-  if (launch.mode == LaunchMode::embedded)
-    throw Error(
-        "embedded mode needs mpm_solver serve, which is not in this build yet; use "
-        "--processes or --endpoints");
   io::prepare_output_directory(options.out_dir, launch.overwrite);
   options.scene_file = scene_file;
 
@@ -103,6 +112,9 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
         "mpm",
         {mpm_program.string(), "serve", "--endpoint", connect.at("mpm"), "--idle-timeout", idle},
         (options.out_dir / "mpm_solver.log").string()));
+  } else if (launch.mode == LaunchMode::embedded) {
+    solvers.push_back(start_thread("fdm", serve_fdm, context, connect.at("fdm")));
+    solvers.push_back(start_thread("mpm", serve_mpm, context, connect.at("mpm")));
   } else {
     solvers.push_back(external_solver("fdm"));
     solvers.push_back(external_solver("mpm"));

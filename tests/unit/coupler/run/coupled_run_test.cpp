@@ -39,8 +39,9 @@ std::string quiet_tube(double end) {
 }
 
 void serve_fdm(zmq::context_t& context, const std::string& endpoint, const std::string& name) {
-  fdm::serve(context, {.endpoint = endpoint, .name = name,
-                       .idle_timeout = std::chrono::milliseconds(10000)});
+  fdm::serve(
+      context,
+      {.endpoint = endpoint, .name = name, .idle_timeout = std::chrono::milliseconds(10000)});
 }
 
 testing::StillMpm* g_mpm = nullptr;  // the stand-in a thread serves (ServeFunction has no state)

@@ -25,7 +25,8 @@ struct StillMpm {
   std::atomic<double> injected_mass{0};
 };
 
-inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_by, int active_axis) {
+inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_by,
+                              int active_axis) {
   std::int64_t n = 1;
   for (int a = 0; a < box.lo_size(); ++a)
     n *= box.hi(a) - box.lo(a) - (a == active_axis ? shrink_active_by : 0);

@@ -69,19 +69,19 @@ std::string layout_error(const std::string& text) {
 }
 
 TEST(ZoneLayout, Refuses_an_mpm_zone_with_two_inner_faces) {
-  EXPECT_THAT(layout_error(scene_text(
-                  "{lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [100, 1, 1]}",
-                  "  fdm: {lower: [0, 0, 0], upper: [1, 0.01, 0.01]}\n"
-                  "  mpm: {lower: [0.4, 0, 0], upper: [0.6, 0.01, 0.01]}\n")),
-              HasSubstr("exactly one face inside the domain (the coupling face), found 2"));
+  EXPECT_THAT(
+      layout_error(scene_text("{lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [100, 1, 1]}",
+                              "  fdm: {lower: [0, 0, 0], upper: [1, 0.01, 0.01]}\n"
+                              "  mpm: {lower: [0.4, 0, 0], upper: [0.6, 0.01, 0.01]}\n")),
+      HasSubstr("exactly one face inside the domain (the coupling face), found 2"));
 }
 
 TEST(ZoneLayout, Refuses_too_few_ghost_layers_inside_the_mpm_zone) {
-  EXPECT_THAT(layout_error(scene_text(
-                  "{lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [100, 1, 1]}",
-                  "  fdm: {lower: [0, 0, 0], upper: [0.99, 0.01, 0.01]}\n"
-                  "  mpm: {lower: [0.6, 0, 0], upper: [1, 0.01, 0.01]}\n")),
-              HasSubstr("3 FDM ghost layers inside the MPM zone past the FDM zone's end"));
+  EXPECT_THAT(
+      layout_error(scene_text("{lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [100, 1, 1]}",
+                              "  fdm: {lower: [0, 0, 0], upper: [0.99, 0.01, 0.01]}\n"
+                              "  mpm: {lower: [0.6, 0, 0], upper: [1, 0.01, 0.01]}\n")),
+      HasSubstr("3 FDM ghost layers inside the MPM zone past the FDM zone's end"));
 }
 
 TEST(ZoneLayout, Refuses_a_scene_that_is_not_cfdmp) {
