@@ -91,17 +91,6 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
         dt_last_, parcels_, returned);
     flux_due_ = false;
   }
-  if (plan.flush) {
-    std::vector<double> m(parcels_.size()), e(parcels_.size());
-    std::vector<Vec> p(parcels_.size());
-    handshake::drain_parcels<Dim>(parcels_, {m, p, e});
-    for (std::size_t t = 0; t < m.size(); ++t) {
-      returned_mass_[t] += m[t];
-      returned_momentum_[t] += p[t];
-      returned_energy_[t] += e[t];
-    }
-  }
-
   add_deposit(fdm);
   if (plan.advance) {
     add_ghost_cells(fdm);
@@ -282,7 +271,7 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
           per_axis = std::max(per_axis, body.particles_per_axis);
         const double per_cell = std::pow(static_cast<double>(per_axis), Dim);
         rule_.reference_mass = rho_max * geometry_.cell_volume / per_cell;
-        rule_.min_particle_mass = 0.5 * rule_.reference_mass;
+        rule_.min_particle_mass = 0.125 * rule_.reference_mass;
         rule_.check();
       }
     } else if (fdm_ops_[i] == Op::export_owned) {

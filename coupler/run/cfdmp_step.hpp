@@ -7,7 +7,7 @@
 //         (export fdm_owned), propose_dt]
 //   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
 //         remove "crossed" (left mpm_zone), (export mpm_zone), propose_dt]
-// A step without advance (step 0, and the flush before output) keeps only the
+// A step without advance (step 0, and the one before each output) keeps only the
 // applies of deposits, the exports and the proposals.
 
 #include <array>
@@ -33,10 +33,9 @@ struct Totals {
 };
 
 struct StepPlan {
-  bool advance = false;  ///< false: step 0 or a flush (no Advance, no injection)
+  bool advance = false;  ///< false: step 0 or before output (no Advance, no injection)
   double dt = 0;         ///< Δt^n [s]
   double time = 0;       ///< t^n [s]
-  bool flush = false;    ///< return every parcel to the FDM (before output: conservative files)
   bool audit = false;    ///< export the zones' contents for the conservation audit
 };
 

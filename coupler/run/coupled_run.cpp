@@ -151,7 +151,7 @@ class Loop {
       report_.time = t;
       if (output_now) {
         hub_.set_clock(static_cast<std::uint64_t>(n), t);
-        exchange({.advance = false, .time = t, .flush = true, .audit = true});
+        exchange({.advance = false, .time = t, .audit = true});
         write_output(outputs++);
         record_summary("running", seconds_since(start));
       }

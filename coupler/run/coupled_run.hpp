@@ -2,8 +2,10 @@
 // `coupler run`: a CFDMP run (T §4.3) driven over protocol v1. The solvers are
 // already started and connecting to `hub`; this does the session (Hello,
 // Setup), the lockstep loop (dt = min of the proposals, one Exchange per solver
-// per step, sent together), output at the scene's intervals (after a flush, so
-// the files are conservative), the conservation audit in summary.json, and
+// per step, sent together), output at the scene's intervals (after an exchange
+// without Advance that deposits the particles removed in the last step and
+// exports the audit; the face parcels stay with the coupler and are counted in
+// the audit), the conservation audit in summary.json, and
 // Shutdown. On any failure it names the solver, shuts the other down, keeps
 // what was written, writes summary.json with status "failed" and throws.
 
