@@ -1,11 +1,15 @@
 // coupler: runs a CFDMP scene (T §4.3) by driving `fdm_solver serve` and
 // `mpm_solver serve` over protocol v1 (proto/README.md).
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 
 #include "common/core/error.hpp"
 #include "coupler/run/launch.hpp"
+#include "coupler/run/replay.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"coupler: CFDMP co-simulation of the FDM and MPM solvers"};
@@ -30,7 +34,44 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   run->add_option("--fdm-program", fdm_program, "fdm_solver to start (default: beside coupler)");
   run->add_option("--mpm-program", mpm_program, "mpm_solver to start (default: beside coupler)");
+  mpfd::coupler::ReplayOptions replay_options;
+  std::string recording, replay_out;
+  auto* replay = app.add_subcommand(
+      "replay", "play a recorded run's coupler side against one live solver and compare replies");
+  replay->add_option("file", recording, "recording (.mpfdrec)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  replay->add_option("--solver", replay_options.solver, "the solver to replay")
+      ->required()
+      ->check(CLI::IsMember({"fdm", "mpm"}));
+  replay->add_option("--tolerance", replay_options.tolerance,
+                     "relative tolerance for values (default 0: bitwise)");
+  replay->add_option("--out", replay_out,
+                     "folder for the solver's output (default: a temp folder)");
   CLI11_PARSE(app, argc, argv);
+
+  if (*replay) {
+    try {
+      replay_options.out_dir = replay_out.empty()
+                                   ? std::filesystem::temp_directory_path() /
+                                         ("mpfd-replay-" + std::to_string(::getpid()))
+                                   : std::filesystem::path(replay_out);
+      const auto report = mpfd::coupler::replay(
+          recording, replay_options, mpfd::coupler::embedded_serve(replay_options.solver));
+      if (report.divergence) {
+        std::cout << "replay of '" << replay_options.solver << "': first divergence at "
+                  << *report.divergence << "\n";
+        return 2;
+      }
+      std::cout << "replay of '" << replay_options.solver << "': " << report.requests
+                << " requests, " << report.values_compared
+                << " array values, every reply identical to the recording\n";
+      return 0;
+    } catch (const std::exception& error) {
+      std::cerr << "coupler: " << error.what() << "\n";
+      return 1;
+    }
+  }
 
   try {
     if (!endpoints.empty()) launch.endpoints = mpfd::coupler::parse_endpoint_list(endpoints);

@@ -49,6 +49,12 @@ std::filesystem::path program(const std::filesystem::path& given, const std::fil
 
 }  // namespace
 
+ServeFunction embedded_serve(const std::string& name) {
+  if (name == "fdm") return serve_fdm;
+  if (name == "mpm") return serve_mpm;
+  throw Error("no solver called '" + name + "' (expected fdm or mpm)");
+}
+
 std::map<std::string, std::string> parse_endpoint_list(const std::string& text) {
   std::map<std::string, std::string> endpoints;
   std::stringstream in(text);

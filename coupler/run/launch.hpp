@@ -28,6 +28,9 @@ struct LaunchOptions {
 /// Parses "fdm=URL,mpm=URL"; throws mpfd::Error naming a bad entry.
 [[nodiscard]] std::map<std::string, std::string> parse_endpoint_list(const std::string& text);
 
+/// The in-process entry point of solver `name` ("fdm" or "mpm"); throws mpfd::Error otherwise.
+[[nodiscard]] ServeFunction embedded_serve(const std::string& name);
+
 /// Loads and checks the scene (a bad scene or layout is refused before
 /// anything starts or is written), prepares the output folder, starts the
 /// solvers and runs. Throws mpfd::Error.
