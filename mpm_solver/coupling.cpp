@@ -154,7 +154,6 @@ void MpmSolver::queue_node_load(const NodeLoad& load) {
 }
 
 void MpmSolver::apply_node_loads() {
-  added_node_state_.clear();
   const auto added = [this](std::size_t n) -> AddedNodeState& {
     for (auto& entry : added_node_state_)
       if (entry.node == n) return entry;

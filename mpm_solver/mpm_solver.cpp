@@ -117,6 +117,7 @@ void MpmSolver::advance(double dt) {
     throw Error("mpm: time step must be positive and finite, got " + std::to_string(dt));
   rebuild_grid();
   particles_to_grid();
+  added_node_state_.clear();  // only this step's loads enter the remap
   if (!node_loads_.empty()) apply_node_loads();
   integrate_nodes(dt);
   if (settings_.update == config::MpmUpdate::musl) {
