@@ -95,6 +95,8 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
         particles_.deviatoric_stress[kFromVoigt[c]][p] = sigma[c] + (c < 3 ? pressure : 0.0);
     }
   }
+  home_slot_.reserve(particles_.size());  // the step's scratch: sized here, not in the step
+  leaving_.reserve(particles_.size());
   compute_stable_dt();
 }
 
@@ -201,6 +203,8 @@ void MpmSolver::restore(ParticleSet particles, std::span<const std::size_t> inje
   bodies_.resize(scene_bodies_);
   for (const std::size_t m : injected_body_materials) injected_body(m);  // one per material
   particles_ = std::move(particles);
+  home_slot_.reserve(particles_.size());
+  leaving_.reserve(particles_.size());
   time_ = time;
   steps_ = steps;
   ledger_ = ledger;

@@ -177,5 +177,63 @@ TEST(MpmServeParticles, AForceOnTheInterfaceNodesAddsSumFDtToTheMomentum) {
   EXPECT_NEAR(served_totals.momentum[0] - direct_px, 15 * force * dt, 1e-9 * 15 * force * dt);
 }
 
+TEST(MpmServeParticles, GhostNodesExportTheInternalEnergyOfTheParticlesPerGhostCell) {
+  ServedMpm served;
+  served.request(setup(blast_text(), cfdmp_regions()));
+  cosim::Message exchange;
+  add_export(exchange, "ghost_nodes");
+  const auto energy =
+      array_of(served.request(std::move(exchange)), "ghost_nodes", "internal_energy");
+  // Nodes x 3..5 bound cells x 3 and 4, y 0..15: 32 cells, C order (y fastest).
+  ASSERT_EQ(energy.size(), 32U);
+  // Cell x = 3 lies left of the gas (x >= 0.25); a cell x = 4 holds 1 kg/m^3 of gas at
+  // e = p / ((gamma - 1) rho) = 2.5e5 J/kg: 0.0625^3 m^3 x 2.5e5 J/kg.
+  const double cell = 0.0625 * 0.0625 * 0.0625 * 2.5e5;
+  for (std::size_t j = 0; j < 16; ++j) {
+    EXPECT_EQ(energy[j], 0.0) << "cell (3, " << j << ")";
+    EXPECT_NEAR(energy[16 + j], cell, 1e-12 * cell) << "cell (4, " << j << ")";
+  }
+}
+
+TEST(MpmServeParticles, ANodeLoadNoParticleReachesLeavesTheStepBitForBit) {
+  ServedMpm served;
+  auto regions = cfdmp_regions();
+  regions.push_back(region("left_face", v1::REGION_KIND_NODES, {0, 0, 0}, {1, 17, 1},
+                           {"mass", "momentum", "internal_force"}));
+  regions.push_back(
+      region("all", v1::REGION_KIND_PARTICLES, {0, 0, 0}, {16, 16, 1}, {"position", "velocity"}));
+  const double dt = served.request(setup(blast_text(), regions)).header.setup_ack().stable_dt();
+  const auto scene = config::parse_scene(blast_text(), "blast.yaml");
+  MpmSolver direct(scene, MpmSettings::from_scene(scene));
+  direct.advance(dt);
+
+  cosim::Message step;
+  for (const auto mode : {v1::ApplyRegion::MODE_SET, v1::ApplyRegion::MODE_ADD}) {
+    auto& apply = *add_op(step).mutable_apply();
+    apply.set_region("left_face");
+    apply.set_mode(mode);
+  }
+  const std::vector<double> mass(17, 1.0), vector(17 * 3, 5.0);
+  cosim::add_array(step, {"left_face", "mass", {}, "kg"}, std::span<const double>(mass));
+  cosim::add_array(step, {"left_face", "momentum", {17, 3}, "kg*m/s"},
+                   std::span<const double>(vector));
+  cosim::add_array(step, {"left_face", "internal_force", {17, 3}, "N"},
+                   std::span<const double>(vector));
+  add_advance(step, dt, 0.0);
+  add_export(step, "all");
+  const auto reply = served.request(std::move(step));
+  // Nodes x = 0 are two cells from the gas (x >= 0.25): their blocks are made for the
+  // loads, and no particle reads them.
+  const auto position = array_of(reply, "all", "position");
+  const auto velocity = array_of(reply, "all", "velocity");
+  const ParticleSet& ps = direct.particles();
+  ASSERT_EQ(position.size(), 3 * ps.size());
+  for (std::size_t p = 0; p < ps.size(); ++p)
+    for (std::size_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(position[3 * p + a], ps.position[a][p]);
+      ASSERT_EQ(velocity[3 * p + a], ps.velocity[a][p]);
+    }
+}
+
 }  // namespace
 }  // namespace mpfd::mpm

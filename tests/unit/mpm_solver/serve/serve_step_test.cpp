@@ -104,6 +104,24 @@ TEST(MpmServe, WriteOutputWritesAParticleSnapshotIntoTheOutputDir) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(MpmServe, GaugesReadTheNearestParticle) {
+  ServedMpm served;
+  served.request(setup(blast_text(), {}));
+  cosim::Message exchange;
+  auto& sample = *add_op(exchange).mutable_sample();
+  sample.set_group("gauges");
+  for (const char* name : {"core", "air"}) sample.add_gauge_names(name);
+  for (const double x : {0.5, 0.5, 0.03, 0.3, 0.1, 0.03}) sample.add_positions(x);
+  for (const char* q : {"density", "pressure"}) sample.add_quantities(q);
+  const auto reply = served.request(std::move(exchange));
+  EXPECT_EQ(reply.header.exchange_result().results(0).sampled().count(), 2U);
+  // blast_text: the core holds 2 kg/m^3 at 1 MPa, the air 1 kg/m^3 at 0.1 MPa.
+  EXPECT_EQ(array_of(reply, "gauges", "density"), (std::vector<double>{2.0, 1.0}));
+  const auto pressure = array_of(reply, "gauges", "pressure");
+  EXPECT_NEAR(pressure[0], 1.0e6, 1e-6);
+  EXPECT_NEAR(pressure[1], 1.0e5, 1e-7);
+}
+
 TEST(MpmServe, ADormantZoneRefusesAnExchangeUntilActivated) {
   ServedMpm served;
   served.request(setup(blast_text(), {}, "", true));
