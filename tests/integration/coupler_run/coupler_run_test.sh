@@ -50,7 +50,22 @@ fi
 grep -q "solver 'fdm'.*did not answer within 1.0 s" "$work/absent.log" || fail "absent: $(tail -1 "$work/absent.log")"
 [ $(( $(date +%s) - start )) -le 10 ] || fail "absent: took more than 10 s"
 
-# 5. the MPM process killed mid-run: named, the FDM shut down, outputs kept, exit 1
+# 5. external solvers, started by hand, each connecting to its own endpoint
+fdm_solver=$(dirname "$coupler")/../fdm_solver/fdm_solver
+mpm_solver=$(dirname "$coupler")/../mpm_solver/mpm_solver
+ext="fdm=tcp://127.0.0.1:$((port + 4)),mpm=tcp://127.0.0.1:$((port + 5))"
+"$coupler" run "$scene" --out "$work/external" --endpoints "$ext" 2> "$work/external.log" &
+coupler_pid=$!
+"$fdm_solver" serve --endpoint "tcp://127.0.0.1:$((port + 4))" 2> "$work/external_fdm.log" &
+fdm_pid=$!
+"$mpm_solver" serve --endpoint "tcp://127.0.0.1:$((port + 5))" 2> "$work/external_mpm.log" &
+mpm_pid=$!
+wait "$coupler_pid" || fail "external run: $(tail -1 "$work/external.log")"
+wait "$fdm_pid" || fail "external fdm_solver: $(tail -1 "$work/external_fdm.log")"
+wait "$mpm_pid" || fail "external mpm_solver: $(tail -1 "$work/external_mpm.log")"
+[ "$(status_of "$work/external")" = completed ] || fail "external run: summary not completed"
+
+# 6. the MPM process killed mid-run: named, the FDM shut down, outputs kept, exit 1
 long=$work/long.yaml
 sed 's/end: 0.2,/end: 50.0,/' "$scene" > "$long"
 "$coupler" run "$long" --out "$work/kill" --processes --timeout 2 2> "$work/kill.log" &
