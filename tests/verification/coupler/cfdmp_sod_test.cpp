@@ -105,6 +105,22 @@ double star_pressure_deviation(const Profile& f) {
   return worst;
 }
 
+/// x, density and pressure of each profile and of the exact solution, for
+/// cfdmp_sod_figure.sh (docs/figures/cfdmp_sod.svg).
+void write_profiles(const std::filesystem::path& file,
+                    const std::vector<std::pair<std::string, Profile>>& profiles) {
+  std::ofstream out(file);
+  out << "series,x,density,pressure\n";
+  for (const auto& [name, f] : profiles)
+    for (std::size_t i = 0; i < f.x.size(); ++i)
+      out << name << ',' << f.x[i] << ',' << f.density[i] << ',' << f.pressure[i] << '\n';
+  for (int i = 0; i <= 1000; ++i) {
+    const double x = i / 1000.0;
+    const auto e = exact().sample((x - 0.5) / kEnd);
+    out << "exact," << x << ',' << e.density << ',' << e.pressure << '\n';
+  }
+}
+
 nlohmann::json run_coupled(const std::filesystem::path& scene_file,
                            const std::filesystem::path& out) {
   LaunchOptions launch;  // embedded
@@ -130,6 +146,11 @@ TEST(CfdmpSod, Fast_accuracy_against_exact_and_pure_solvers) {
   mpm::run_standalone(scene, {.scene_file = kScene, .out_dir = pure_mpm});
 
   const int last = 10;  // t = 0.2 s at output interval 0.02 s
+  write_profiles(std::filesystem::temp_directory_path() / "mpfd-cfdmp-sod-profiles.csv",
+                 {{"cfdmp_fdm", fdm_cells(coupled / "fdm", last, kFace)},
+                  {"cfdmp_mpm", mpm_particles(coupled / "mpm", last, kFace)},
+                  {"pure_fdm", fdm_cells(pure_fdm, last, 2.0)},
+                  {"pure_mpm", mpm_particles(pure_mpm, last, 0.0)}});
   const double fdm_coupled = mean_density_error(fdm_cells(coupled / "fdm", last, kFace));
   const double fdm_pure = mean_density_error(fdm_cells(pure_fdm, last, kFace));
   const double mpm_coupled = mean_density_error(mpm_particles(coupled / "mpm", last, kFace));
