@@ -36,6 +36,16 @@ Hub::Hub(zmq::context_t& context, std::string_view bind_endpoint, TransportOptio
   endpoint_ = socket_.get(zmq::sockopt::last_endpoint);
 }
 
+std::string Hub::bind_also(std::string_view bind_endpoint) {
+  const Endpoint endpoint = parse_endpoint(bind_endpoint);
+  try {
+    socket_.bind(endpoint.text);
+  } catch (const zmq::error_t& error) {
+    throw Error("coupler cannot bind '" + endpoint.text + "': " + error.what());
+  }
+  return socket_.get(zmq::sockopt::last_endpoint);
+}
+
 void Hub::set_clock(std::uint64_t step, double time) {
   step_ = step;
   time_ = time;

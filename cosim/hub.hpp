@@ -28,6 +28,10 @@ class Hub {
   const std::string& endpoint() const { return endpoint_; }
   const TransportOptions& options() const { return options_; }
 
+  /// Binds one more endpoint to the same socket (solvers on other addresses
+  /// or transports); returns it as bound.
+  std::string bind_also(std::string_view bind_endpoint);
+
   /// Step and time written into the envelope of every message sent from now on.
   void set_clock(std::uint64_t step, double time);
   /// Records every message sent and received (nullptr stops recording).

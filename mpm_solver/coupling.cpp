@@ -156,10 +156,19 @@ void MpmSolver::queue_node_load(const NodeLoad& load) {
 }
 
 void MpmSolver::apply_node_loads() {
+  const auto added = [this](std::size_t n) -> AddedNodeState& {
+    for (auto& entry : added_node_state_)
+      if (entry.node == n) return entry;
+    return added_node_state_.emplace_back(AddedNodeState{n, 0.0, {0.0, 0.0, 0.0}});
+  };
   for (const NodeLoad& load : node_loads_) {
     const auto n = static_cast<std::size_t>(grid_.node(load.node[0] + grid_.offset()[0],
                                                        load.node[1] + grid_.offset()[1],
                                                        load.node[2] + grid_.offset()[2]));
+    if (!load.overwrite && load.quantity == NodeLoad::Quantity::mass)
+      added(n).mass += load.value[0];
+    if (!load.overwrite && load.quantity == NodeLoad::Quantity::momentum)
+      for (int a = 0; a < 3; ++a) added(n).momentum[a] += load.value[a];
     if (load.quantity == NodeLoad::Quantity::mass) {
       grid_.mass[n] = load.overwrite ? load.value[0] : grid_.mass[n] + load.value[0];
       continue;

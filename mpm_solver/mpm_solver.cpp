@@ -117,6 +117,7 @@ void MpmSolver::advance(double dt) {
     throw Error("mpm: time step must be positive and finite, got " + std::to_string(dt));
   rebuild_grid();
   particles_to_grid();
+  added_node_state_.clear();  // only this step's loads enter the remap
   if (!node_loads_.empty()) apply_node_loads();
   integrate_nodes(dt);
   if (settings_.update == config::MpmUpdate::musl) {
@@ -298,6 +299,14 @@ void MpmSolver::update_and_remap_velocities(double dt) {
           }
         });
       });
+  // The mass and momentum a coupler added (T (4-7), (4-8): the FDM cells next
+  // to the zone as particles) move with the node's acceleration like any
+  // particle; without them the remapped velocity of such a node is the
+  // particles' momentum over particles + FDM mass, about half the flow speed
+  // at the CFDMP face, and the particles next to it expand spuriously.
+  for (const auto& added : added_node_state_)
+    for (int a = 0; a < 3; ++a)
+      remapped[a][added.node] += added.momentum[a] + added.mass * accel[a][added.node] * dt;
   for_each_node(grid_.node_count(), [&](std::size_t n) {
     const double m = grid_.mass[n];
     const double inverse = m > 0.0 ? 1.0 / m : 0.0;

@@ -188,7 +188,15 @@ class MpmSolver {
   std::vector<std::unique_ptr<ConstitutiveModel>> models_;  // by material index; null if unused
   std::vector<config::Material> materials_;                 // the scene's, for models made later
   std::size_t scene_bodies_ = 0;
-  std::vector<NodeLoad> node_loads_;     // for the next advance
+  std::vector<NodeLoad> node_loads_;  // for the next advance
+  /// Mass and momentum a coupler added to nodes this step (node slot, dm, dp): a
+  /// virtual particle (the FDM cells of T (4-7), (4-8)) that the MUSL remap must see too.
+  struct AddedNodeState {
+    std::size_t node;
+    double mass;
+    std::array<double, 3> momentum;
+  };
+  std::vector<AddedNodeState> added_node_state_;
   std::vector<std::int32_t> home_slot_;  // scratch, per particle
   std::vector<std::uint8_t> leaving_;    // scratch, per particle
   double stable_dt_ = 0.0;

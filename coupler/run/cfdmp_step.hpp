@@ -1,0 +1,133 @@
+#pragma once
+// One coupled CFDMP step, T §4.3 steps 1-14, as the two Exchange messages of
+// proto/README.md §6 and the reading of their replies. The coupler keeps what
+// crosses between steps: the strip_cells of t^{n-1} and t^n, the ghost_nodes of
+// t^n, the particles removed in the last step and the face parcels.
+//   FDM: [apply deposit_cells ADD, apply ghost_cells SET, advance, export strip_cells,
+//         (export fdm_owned), propose_dt]
+//   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
+//         remove "crossed" (left mpm_zone), (export mpm_zone), propose_dt]
+// A step without advance (step 0, and the one before each output) keeps only the
+// applies of deposits, the exports and the proposals.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "common/config/scene.hpp"
+#include "cosim/message.hpp"
+#include "coupler/handshake/ghost_cells.hpp"
+#include "coupler/handshake/injection_flux.hpp"
+#include "coupler/handshake/interface_nodes.hpp"
+#include "coupler/handshake/particle_injection.hpp"
+#include "coupler/handshake/strip_layout.hpp"
+#include "coupler/run/zone_layout.hpp"
+
+namespace mpfd::coupler {
+
+/// Mass [kg], momentum [kg m/s] (3 axes) and total energy [J].
+struct Totals {
+  double mass = 0;
+  std::array<double, 3> momentum{};
+  double energy = 0;
+};
+
+struct StepPlan {
+  bool advance = false;  ///< false: step 0 or before output (no Advance, no injection)
+  double dt = 0;         ///< Δt^n [s]
+  double time = 0;       ///< t^n [s]
+  bool audit = false;    ///< export the zones' contents for the conservation audit
+};
+
+/// What one step moved across the face (for the audit and the log).
+struct StepTraffic {
+  std::size_t injected = 0;   ///< particles sent to the MPM
+  std::size_t removed = 0;    ///< particles the MPM gave back
+  double injected_mass = 0;   ///< kg
+  double deposited_mass = 0;  ///< kg, removed particles and returned parcels
+  std::size_t discarded = 0;  ///< step 0: MPM particles outside the MPM zone (the FDM's material)
+};
+
+template <int Dim>
+class CfdmpStep {
+ public:
+  CfdmpStep(const config::Scene& scene, const ZoneLayout& layout);
+
+  /// Fills the two requests of a step (empty Messages in).
+  void build(const StepPlan& plan, cosim::Message& fdm, cosim::Message& mpm);
+  /// Reads the replies to the requests of the last build().
+  void read(const StepPlan& plan, const cosim::Message& fdm, const cosim::Message& mpm);
+
+  /// min of the two solvers' last proposals [s].
+  [[nodiscard]] double stable_dt() const { return std::min(fdm_dt_, mpm_dt_); }
+  [[nodiscard]] const char* limited_by() const { return fdm_dt_ <= mpm_dt_ ? "fdm" : "mpm"; }
+  /// The audit exports of the last audited step: FDM zone outside the MPM zone, MPM particles.
+  [[nodiscard]] const Totals& fdm_totals() const { return fdm_totals_; }
+  [[nodiscard]] const Totals& mpm_totals() const { return mpm_totals_; }
+  /// What waits in the face parcels (neither solver holds it).
+  [[nodiscard]] Totals parcel_totals() const;
+  [[nodiscard]] const StepTraffic& traffic() const { return traffic_; }
+
+ private:
+  using Vec = handshake::Vec<Dim>;
+  enum class Op {
+    apply,
+    inject,
+    advance,
+    export_strip,
+    export_owned,
+    export_ghost,
+    discard,
+    remove,
+    export_particles,
+    propose
+  };
+
+  struct Strip {
+    std::vector<double> rho, energy, pressure;
+    std::vector<Vec> momentum;
+  };
+
+  void add_deposit(cosim::Message& fdm);
+  void add_injection(cosim::Message& mpm);
+  void add_ghost_cells(cosim::Message& fdm);
+  void add_interface_nodes(cosim::Message& mpm);
+  void read_fdm(const StepPlan& plan, const cosim::Message& reply);
+  void read_mpm(const cosim::Message& reply);
+  [[nodiscard]] Totals cell_totals(const cosim::Message& reply, std::size_t count) const;
+
+  const config::Scene& scene_;
+  ZoneLayout layout_;
+  handshake::CellGeometry<Dim> geometry_;
+  handshake::StripLayout<Dim> strip_layout_;
+  handshake::InterfaceStencil<Dim> stencil_;
+  handshake::IndexBox<Dim> ghost_cells_;
+  handshake::IndexBox<Dim> ghost_nodes_;
+  handshake::IndexBox<Dim> deposit_box_;
+  std::vector<std::size_t> corners_;
+  std::vector<std::size_t>
+      outer_in_deposit_;  ///< per face cell: its outer cell's place in deposit_cells
+  std::array<double, 3> inactive_centre_{};  ///< particle coordinates on inactive axes
+  handshake::InjectionRule rule_;
+  std::uint32_t fluid_material_ = 0;
+  std::uint64_t next_id_ = std::uint64_t{1} << 48;  ///< injected ids, far above the MPM's own
+
+  Strip strip_now_, strip_prev_;
+  bool flux_due_ = false;
+  double dt_last_ = 0;
+  handshake::Parcels<Dim> parcels_;
+  std::vector<double> returned_mass_, returned_energy_;
+  std::vector<Vec> returned_momentum_;
+  std::vector<double> ghost_node_mass_, ghost_cell_energy_;
+  std::vector<Vec> ghost_node_momentum_;
+  bool have_ghost_source_ = false;
+  std::vector<double> removed_mass_, removed_energy_;
+  std::vector<Vec> removed_position_, removed_velocity_;
+
+  std::vector<Op> fdm_ops_, mpm_ops_;
+  double fdm_dt_ = 0, mpm_dt_ = 0;
+  Totals fdm_totals_, mpm_totals_;
+  StepTraffic traffic_;
+};
+
+}  // namespace mpfd::coupler

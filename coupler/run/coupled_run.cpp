@@ -1,0 +1,326 @@
+#include "coupler/run/coupled_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <variant>
+
+#include "common/core/error.hpp"
+#include "common/core/log.hpp"
+#include "common/core/progress.hpp"
+#include "common/io/run_summary.hpp"
+#include "cosim/recorder.hpp"
+#include "coupler/run/cfdmp_step.hpp"
+#include "coupler/run/wire.hpp"
+
+namespace mpfd::coupler {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+const std::vector<std::string> kPeers = {"fdm", "mpm"};
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string make_run_id() {
+  std::random_device device;
+  char text[17];
+  std::snprintf(text, sizeof text, "%08x%08x", device(), device());
+  return text;
+}
+
+v1::UniformGrid wire_grid(const config::Scene& scene) {
+  v1::UniformGrid grid;
+  int dimension = 0;
+  for (int a = 0; a < 3; ++a) {
+    grid.add_origin(scene.domain.lower[a]);
+    grid.add_spacing((scene.domain.upper[a] - scene.domain.lower[a]) / scene.domain.cells[a]);
+    grid.add_cells(static_cast<std::uint64_t>(scene.domain.cells[a]));
+    dimension += scene.domain.cells[a] > 1 ? 1 : 0;
+  }
+  grid.set_dimension(static_cast<std::uint32_t>(dimension));
+  return grid;
+}
+
+/// The Setup of each solver (proto §5, regions of §6).
+std::vector<cosim::Message> setups(const config::Scene& scene, const std::string& text,
+                                   const ZoneLayout& layout, const std::filesystem::path& out) {
+  std::vector<cosim::Message> messages(2);
+  auto& fdm = *messages[0].header.mutable_setup();
+  fdm.mutable_zone()->set_name("fdm");
+  fdm.mutable_zone()->set_kind(v1::ZONE_KIND_EULER);
+  *fdm.mutable_zone()->mutable_grid() = wire_grid(scene);
+  fdm.mutable_zone()->set_ghost_layers(static_cast<std::uint32_t>(kFdmGhostLayers));
+  fdm.set_scene_fragment(text);
+  const auto cells = v1::REGION_KIND_CELLS;
+  *fdm.add_regions() =
+      make_region("ghost_cells", cells, layout.ghost_cells, {"rho", "momentum", "E"});
+  *fdm.add_regions() =
+      make_region("strip_cells", cells, layout.strip_cells, {"rho", "momentum", "E", "pressure"});
+  *fdm.add_regions() =
+      make_region("deposit_cells", cells, layout.deposit_cells, {"rho", "momentum", "E"});
+  *fdm.add_regions() = make_region("fdm_owned", cells, layout.fdm_owned, {"rho", "momentum", "E"});
+  fdm.set_output_dir((out / "fdm").string());
+
+  auto& mpm = *messages[1].header.mutable_setup();
+  mpm.mutable_zone()->set_name("mpm");
+  mpm.mutable_zone()->set_kind(v1::ZONE_KIND_MPM);
+  *mpm.mutable_zone()->mutable_grid() = wire_grid(scene);
+  mpm.set_scene_fragment(text);
+  *mpm.add_regions() = make_region("ghost_nodes", v1::REGION_KIND_NODES, layout.ghost_nodes,
+                                   {"mass", "momentum", "internal_energy"});
+  *mpm.add_regions() = make_region("interface_nodes", v1::REGION_KIND_NODES, layout.interface_nodes,
+                                   {"mass", "momentum", "internal_force"});
+  *mpm.add_regions() = make_region("mpm_zone", v1::REGION_KIND_PARTICLES, layout.mpm_zone,
+                                   {"mass", "velocity", "internal_energy"});
+  mpm.set_output_dir((out / "mpm").string());
+  return messages;
+}
+
+double advance_seconds(const cosim::Message& reply) {
+  if (!reply.header.has_exchange_result()) return 0;
+  for (const auto& result : reply.header.exchange_result().results())
+    if (result.has_advanced()) return result.advanced().wall_seconds();
+  return 0;
+}
+
+Totals sum(const Totals& a, const Totals& b, const Totals& c) {
+  Totals t;
+  t.mass = a.mass + b.mass + c.mass;
+  t.energy = a.energy + b.energy + c.energy;
+  for (int k = 0; k < 3; ++k) t.momentum[k] = a.momentum[k] + b.momentum[k] + c.momentum[k];
+  return t;
+}
+
+std::vector<io::ConservationEntry> audit(const Totals& initial, const Totals& now) {
+  std::vector<io::ConservationEntry> entries;
+  entries.push_back({"mass", "kg", initial.mass, now.mass, 0.0});
+  const char* names[3] = {"momentum_x", "momentum_y", "momentum_z"};
+  for (int k = 0; k < 3; ++k)
+    entries.push_back({names[k], "kg m/s", initial.momentum[k], now.momentum[k], 0.0});
+  entries.push_back({"energy", "J", initial.energy, now.energy, 0.0});
+  return entries;
+}
+
+nlohmann::json totals_json(const Totals& t) {
+  return {{"mass", t.mass}, {"momentum", t.momentum}, {"energy", t.energy}};
+}
+
+template <int Dim>
+class Loop {
+ public:
+  Loop(const config::Scene& scene, const ZoneLayout& layout, cosim::Hub& hub,
+       io::RunSummary& summary, const CoupledRunOptions& options)
+      : scene_(scene), step_(scene, layout), hub_(hub), summary_(summary), options_(options) {}
+
+  CoupledRunReport run() {
+    const auto start = Clock::now();
+    exchange({.advance = false, .audit = true});
+    initial_ = current();
+    write_output(0);
+    ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
+    const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
+    int outputs = 1;
+    double t = 0;
+    std::int64_t n = 0;
+    while (t < scene_.time.end * (1 - 1e-12)) {
+      if (n >= scene_.time.max_steps)
+        throw Error("scene '" + scene_.name +
+                    "': time.max_steps = " + std::to_string(scene_.time.max_steps) +
+                    " reached at t = " + std::to_string(t) + " s");
+      const double next_output = std::min(scene_.time.end, outputs * interval);
+      double dt = step_.stable_dt();
+      bool output_now = false;
+      if (t + dt >= next_output * (1 - 1e-12)) {
+        dt = next_output - t;
+        output_now = true;
+      }
+      ++n;
+      hub_.set_clock(static_cast<std::uint64_t>(n), t);
+      const auto step_start = Clock::now();
+      const auto [fdm_s, mpm_s] = exchange({.advance = true, .dt = dt, .time = t});
+      report_.fdm_advance_seconds += fdm_s;
+      report_.mpm_advance_seconds += mpm_s;
+      report_.max_advance_seconds += std::max(fdm_s, mpm_s);
+      step_seconds_ += seconds_since(step_start);
+      t = output_now ? next_output : t + dt;
+      report_.steps = n;
+      report_.time = t;
+      if (output_now) {
+        hub_.set_clock(static_cast<std::uint64_t>(n), t);
+        exchange({.advance = false, .time = t, .audit = true});
+        write_output(outputs++);
+        record_summary("running", seconds_since(start));
+      }
+      progress.update(n, t);
+    }
+    progress.finish(n, t);
+    report_.wall_seconds = seconds_since(start);
+    record_summary("completed", report_.wall_seconds);
+    return report_;
+  }
+
+  void record_summary(const std::string& status, double wall) {
+    const Totals now = current();
+    const auto entries = audit(initial_, now);
+    summary_.set_status(status);
+    summary_.set_progress(report_.steps, report_.time, scene_.time.end, wall);
+    summary_.set_conservation(entries);
+    report_.mass_error = entries[0].relative_error(0);
+    report_.energy_error = entries[4].relative_error(0);
+    summary_.set_detail("zones", {{"fdm_owned", totals_json(step_.fdm_totals())},
+                                  {"mpm", totals_json(step_.mpm_totals())},
+                                  {"parcels", totals_json(step_.parcel_totals())}});
+    summary_.set_detail("crossing", {{"injected_particles", injected_},
+                                     {"removed_particles", removed_},
+                                     {"injected_mass_kg", injected_mass_},
+                                     {"deposited_mass_kg", deposited_mass_},
+                                     {"discarded_at_start", discarded_}});
+    const double overhead =
+        step_seconds_ > 0 ? 1.0 - report_.max_advance_seconds / step_seconds_ : 0.0;
+    summary_.set_detail("timing", {{"step_seconds", step_seconds_},
+                                   {"fdm_advance_seconds", report_.fdm_advance_seconds},
+                                   {"mpm_advance_seconds", report_.mpm_advance_seconds},
+                                   {"slower_advance_seconds", report_.max_advance_seconds},
+                                   {"coupling_overhead_share", overhead}});
+    summary_.write(options_.out_dir / "summary.json");
+  }
+
+ private:
+  [[nodiscard]] Totals current() const {
+    return sum(step_.fdm_totals(), step_.mpm_totals(), step_.parcel_totals());
+  }
+
+  /// One Exchange per solver, sent together; returns the two advance wall times.
+  std::pair<double, double> exchange(const StepPlan& plan) {
+    cosim::Message fdm, mpm;
+    step_.build(plan, fdm, mpm);
+    hub_.send("fdm", std::move(fdm));
+    hub_.send("mpm", std::move(mpm));
+    const auto replies = hub_.gather(kPeers);
+    step_.read(plan, replies[0], replies[1]);
+    const auto& traffic = step_.traffic();
+    injected_ += traffic.injected;
+    removed_ += traffic.removed;
+    injected_mass_ += traffic.injected_mass;
+    deposited_mass_ += traffic.deposited_mass;
+    discarded_ += traffic.discarded;
+    return {advance_seconds(replies[0]), advance_seconds(replies[1])};
+  }
+
+  void write_output(int index) {
+    for (const auto& peer : kPeers) {
+      cosim::Message message;
+      auto& body = *message.header.mutable_write_output();
+      body.set_basename(peer + "_" + std::to_string(index));
+      hub_.send(peer, std::move(message));
+    }
+    hub_.gather(kPeers);
+  }
+
+  const config::Scene& scene_;
+  CfdmpStep<Dim> step_;
+  cosim::Hub& hub_;
+  io::RunSummary& summary_;
+  const CoupledRunOptions& options_;
+  Totals initial_;
+  CoupledRunReport report_;
+  double step_seconds_ = 0;
+  std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
+  double injected_mass_ = 0, deposited_mass_ = 0;
+};
+
+template <int Dim>
+CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout, cosim::Hub& hub,
+                          io::RunSummary& summary, const CoupledRunOptions& options) {
+  Loop<Dim> loop(scene, layout, hub, summary, options);
+  try {
+    return loop.run();
+  } catch (...) {
+    loop.record_summary("failed", 0);
+    throw;
+  }
+}
+
+/// Best effort: Shutdown to every solver still there, then end the ones we started.
+std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
+                      const std::string& reason) {
+  for (const auto& solver : solvers) {
+    if (solver->ended()) continue;
+    try {
+      cosim::Message message;
+      message.header.mutable_shutdown()->set_reason(reason);
+      hub.send(solver->name(), std::move(message));
+      (void)hub.receive_from(solver->name());
+    } catch (const std::exception&) {
+      // It is gone or broken; finish() below ends it.
+    }
+  }
+  std::string how;
+  for (const auto& solver : solvers)
+    how += "; solver '" + solver->name() + "' " + solver->finish(std::chrono::milliseconds(2000));
+  return how;
+}
+
+}  // namespace
+
+CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_text,
+                           cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
+                           const CoupledRunOptions& options) {
+  const Logger logger("coupler");
+  const ZoneLayout layout = make_zone_layout(scene);
+  std::unique_ptr<cosim::Recorder> recorder;
+  if (options.record) {
+    recorder = std::make_unique<cosim::Recorder>(*options.record);
+    hub.attach_recorder(recorder.get());
+  }
+  io::RunSummary summary("coupler run", scene.name, options.scene_file);
+  std::filesystem::create_directories(options.out_dir / "fdm");
+  std::filesystem::create_directories(options.out_dir / "mpm");
+  CoupledRunReport report;
+  try {
+    const auto hellos = hub.accept(kPeers, make_run_id());
+    for (std::size_t i = 0; i < hellos.size(); ++i)
+      logger.info("solver '", kPeers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
+    auto messages = setups(scene, scene_text, layout, options.out_dir);
+    hub.send("fdm", std::move(messages[0]));
+    hub.send("mpm", std::move(messages[1]));
+    hub.gather(kPeers);
+    logger.info("zones set up: face normal to axis ", layout.face_axis, " side ", layout.face_side,
+                ", strip ", box_text(layout.strip_cells), ", ghost cells ",
+                box_text(layout.ghost_cells));
+    switch (layout.dimension) {
+      case 1:
+        report = run_loop<1>(scene, layout, hub, summary, options);
+        break;
+      case 2:
+        report = run_loop<2>(scene, layout, hub, summary, options);
+        break;
+      default:
+        report = run_loop<3>(scene, layout, hub, summary, options);
+        break;
+    }
+  } catch (const std::exception& error) {
+    std::string ended;
+    for (const auto& solver : solvers)
+      if (const auto how = solver->ended()) ended += "; solver '" + solver->name() + "' " + *how;
+    const std::string text = std::string(error.what()) + ended;
+    summary.set_status("failed", text);
+    summary.write(options.out_dir / "summary.json");
+    shut_down(hub, solvers, "coupler stops: " + text);
+    hub.attach_recorder(nullptr);
+    if (recorder) recorder->close();
+    throw Error("coupler run failed: " + text);
+  }
+  shut_down(hub, solvers, "run completed");
+  hub.attach_recorder(nullptr);
+  if (recorder) recorder->close();
+  logger.info("done: ", report.steps, " steps to t = ", report.time, " s in ", report.wall_seconds,
+              " s; mass error ", report.mass_error, ", energy error ", report.energy_error);
+  return report;
+}
+
+}  // namespace mpfd::coupler

@@ -1,0 +1,50 @@
+#pragma once
+// `coupler run`: a CFDMP run (T §4.3) driven over protocol v1. The solvers are
+// already started and connecting to `hub`; this does the session (Hello,
+// Setup), the lockstep loop (dt = min of the proposals, one Exchange per solver
+// per step, sent together), output at the scene's intervals (after an exchange
+// without Advance that deposits the particles removed in the last step and
+// exports the audit; the face parcels stay with the coupler and are counted in
+// the audit), the conservation audit in summary.json, and
+// Shutdown. On any failure it names the solver, shuts the other down, keeps
+// what was written, writes summary.json with status "failed" and throws.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/config/scene.hpp"
+#include "cosim/hub.hpp"
+#include "coupler/run/solver_handle.hpp"
+
+namespace mpfd::coupler {
+
+struct CoupledRunOptions {
+  std::filesystem::path scene_file;
+  std::filesystem::path out_dir;
+  std::optional<std::filesystem::path> record;  ///< write every message here (proto §10)
+  bool progress = true;                         ///< progress line on a terminal
+};
+
+/// What the run measured (also in summary.json).
+struct CoupledRunReport {
+  std::int64_t steps = 0;
+  double time = 0;
+  double wall_seconds = 0;
+  double fdm_advance_seconds = 0;  ///< Σ AdvanceResult.wall_seconds of the FDM
+  double mpm_advance_seconds = 0;
+  double max_advance_seconds = 0;  ///< Σ over steps of the slower solver's advance
+  double mass_error = 0;           ///< relative, against the initial total
+  double energy_error = 0;
+};
+
+/// Runs `scene` (cfdmp, text `scene_text` sent to the solvers in Setup) with
+/// the solvers of `solvers` ("fdm", "mpm") connecting to `hub`. `out_dir` must
+/// have been prepared (io::prepare_output_directory). Throws mpfd::Error.
+CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_text,
+                           cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
+                           const CoupledRunOptions& options);
+
+}  // namespace mpfd::coupler

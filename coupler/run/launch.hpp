@@ -1,0 +1,40 @@
+#pragma once
+// How `coupler run` gets its two solvers: embedded (threads of this process
+// over inproc), as child processes (over ipc, or over the given endpoints), or
+// external (started by someone else; the coupler binds the given endpoints and
+// waits for them to connect).
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "coupler/run/coupled_run.hpp"
+
+namespace mpfd::coupler {
+
+enum class LaunchMode { embedded, processes, external };
+
+struct LaunchOptions {
+  LaunchMode mode = LaunchMode::embedded;
+  /// Bind endpoints per solver ("fdm", "mpm"); empty: chosen by the mode.
+  std::map<std::string, std::string> endpoints;
+  double timeout_seconds = 5.0;       ///< reply timeout (proto §1)
+  std::filesystem::path fdm_program;  ///< for processes; empty: beside the coupler
+  std::filesystem::path mpm_program;
+  bool overwrite = false;
+};
+
+/// Parses "fdm=URL,mpm=URL"; throws mpfd::Error naming a bad entry.
+[[nodiscard]] std::map<std::string, std::string> parse_endpoint_list(const std::string& text);
+
+/// The in-process entry point of solver `name` ("fdm" or "mpm"); throws mpfd::Error otherwise.
+[[nodiscard]] ServeFunction embedded_serve(const std::string& name);
+
+/// Loads and checks the scene (a bad scene or layout is refused before
+/// anything starts or is written), prepares the output folder, starts the
+/// solvers and runs. Throws mpfd::Error.
+CoupledRunReport launch_run(const std::filesystem::path& scene_file, const LaunchOptions& launch,
+                            CoupledRunOptions options, const std::filesystem::path& self);
+
+}  // namespace mpfd::coupler

@@ -1,0 +1,163 @@
+// The CFDMP loop (coupler/run/coupled_run.hpp) driving the real `fdm_solver
+// serve` (a thread, or a child process) and a still-air stand-in for the MPM.
+#include "coupler/run/coupled_run.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "common/config/scene_loader.hpp"
+#include "common/core/error.hpp"
+#include "common/io/output_directory.hpp"
+#include "fdm_solver/serve/serve.hpp"
+#include "tests/unit/coupler/run/still_mpm.hpp"
+
+namespace mpfd::coupler {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+// Air at rest in a 1 m tube of 40 cells: FDM [0, 0.6], MPM [0.4, 1], w = 8 cells.
+std::string quiet_tube(double end) {
+  return "name: quiet_tube\ntime: {end: " + std::to_string(end) +
+         ", cfl: 0.5}\n"
+         "domain: {lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [40, 1, 1]}\n"
+         "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+         "initial: {material: air, density: 1.2, pressure: 1.0e5}\n"
+         "boundaries: {x_lower: wall, x_upper: wall}\n"
+         "output: {interval: " +
+         std::to_string(end / 2) +
+         "}\nsolver: {method: cfdmp}\n"
+         "zones:\n  fdm: {lower: [0, 0, 0], upper: [0.6, 0.01, 0.01]}\n"
+         "  mpm: {lower: [0.4, 0, 0], upper: [1, 0.01, 0.01]}\n  handshake_width: 5\n";
+}
+
+void serve_fdm(zmq::context_t& context, const std::string& endpoint, const std::string& name) {
+  fdm::serve(
+      context,
+      {.endpoint = endpoint, .name = name, .idle_timeout = std::chrono::milliseconds(10000)});
+}
+
+testing::StillMpm* g_mpm = nullptr;  // the stand-in a thread serves (ServeFunction has no state)
+void serve_mpm(zmq::context_t& context, const std::string& endpoint, const std::string&) {
+  testing::serve_still_mpm(context, endpoint, *g_mpm);
+}
+
+std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("mpfd-coupler-test-" + name);
+  std::filesystem::remove_all(dir);
+  io::prepare_output_directory(dir, false);
+  return dir;
+}
+
+CoupledRunOptions options(const std::filesystem::path& out) {
+  CoupledRunOptions o;
+  o.out_dir = out;
+  o.progress = false;
+  return o;
+}
+
+nlohmann::json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+struct Harness {
+  explicit Harness(double timeout_seconds = 5.0) {
+    mpm.cell_volume = 0.025 * 0.01 * 0.01;
+    g_mpm = &mpm;
+    cosim::TransportOptions transport;
+    transport.reply_timeout = std::chrono::milliseconds(std::llround(timeout_seconds * 1e3));
+    hub = std::make_unique<cosim::Hub>(context, "inproc://coupler-run-test", transport);
+  }
+  zmq::context_t context;
+  testing::StillMpm mpm;
+  std::unique_ptr<cosim::Hub> hub;
+};
+
+TEST(CoupledRun, Quiet_air_stays_quiet_and_conserves_over_the_zones) {
+  Harness h;
+  const std::string text = quiet_tube(2.0e-3);
+  const auto scene = config::parse_scene(text, "quiet.yaml");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  const auto out = fresh_dir("quiet");
+  const auto report = run_cfdmp(scene, text, *h.hub, solvers, options(out));
+
+  // The FDM proposes 73.2 us for c = 341.6 m/s, dx = 25 mm (the MPM stand-in 1 s):
+  // 2 ms / 73.2 us = 27.3 -> 28 steps, the output at 1 ms cutting one.
+  EXPECT_GE(report.steps, 28);
+  EXPECT_LE(report.steps, 29);
+  EXPECT_DOUBLE_EQ(report.time, 2.0e-3);
+  EXPECT_LT(std::abs(report.mass_error), 1e-14);
+  EXPECT_LT(std::abs(report.energy_error), 1e-14);
+  EXPECT_EQ(h.mpm.injected_mass.load(), 0.0);
+  const auto summary = read_json(out / "summary.json");
+  EXPECT_EQ(summary["status"], "completed");
+  // FDM owned: 16 cells x 1.2 kg/m^3 x 2.5e-6 m^3; MPM: 24 cells.
+  EXPECT_NEAR(summary["details"]["zones"]["fdm_owned"]["mass"].get<double>(), 16 * 1.2 * 2.5e-6,
+              1e-15);
+  EXPECT_NEAR(summary["details"]["zones"]["mpm"]["mass"].get<double>(), 24 * 1.2 * 2.5e-6, 1e-15);
+  EXPECT_TRUE(std::filesystem::exists(out / "fdm"));
+}
+
+TEST(CoupledRun, A_silent_solver_is_named_within_the_timeout_and_the_other_is_shut_down) {
+  Harness h(0.5);
+  h.mpm.silent_from_step = 5;
+  const std::string text = quiet_tube(2.0e-3);
+  const auto scene = config::parse_scene(text, "quiet.yaml");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  const auto out = fresh_dir("silent");
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    run_cfdmp(scene, text, *h.hub, solvers, options(out));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), AllOf(HasSubstr("'mpm'"), HasSubstr("0.5 s")));
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  // The FDM got Shutdown and ended by itself.
+  EXPECT_THAT(solvers[0]->ended().value_or("running"), HasSubstr("returned"));
+  const auto summary = read_json(out / "summary.json");
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_THAT(summary["error"].get<std::string>(), HasSubstr("'mpm'"));
+}
+
+TEST(CoupledRun, A_killed_solver_process_is_named_and_outputs_are_kept) {
+  Harness h(1.0);
+  const std::string ipc =
+      "ipc://" + (std::filesystem::temp_directory_path() / "mpfd-coupler-kill-test").string();
+  const std::string fdm_endpoint = h.hub->bind_also(ipc);
+  const std::string text = quiet_tube(10.0);  // ~270000 steps: runs until killed
+  const auto scene = config::parse_scene(text, "quiet.yaml");
+  const auto out = fresh_dir("kill");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_process("fdm", {MPFD_FDM_SOLVER, "serve", "--endpoint", fdm_endpoint},
+                                  (out / "fdm_solver.log").string()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  std::thread killer([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    ::kill(*solvers[0]->process_id(), SIGKILL);
+  });
+  try {
+    run_cfdmp(scene, text, *h.hub, solvers, options(out));
+    ADD_FAILURE() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), AllOf(HasSubstr("'fdm'"), HasSubstr("killed by signal 9")));
+  }
+  killer.join();
+  EXPECT_FALSE(std::filesystem::is_empty(out / "fdm"));  // the t = 0 output is kept
+  EXPECT_EQ(read_json(out / "summary.json")["status"], "failed");
+}
+
+}  // namespace
+}  // namespace mpfd::coupler

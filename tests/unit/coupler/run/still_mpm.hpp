@@ -1,0 +1,118 @@
+#pragma once
+// A stand-in for `mpm_solver serve` in coupler tests (until the real one is
+// merged): an MPM zone of ideal gas at rest, uniform density and pressure,
+// answering the operations of proto §6 with the values a real MPM would give
+// for that state (nodal mass ρV_c per node, internal energy pV_c/(γ-1) per
+// ghost cell, 2 particles per zone cell). It counts the mass injected into it.
+// `silent_from_step`: from that step on it stops answering (a hung solver).
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cosim/arrays.hpp"
+#include "cosim/participant.hpp"
+
+namespace mpfd::coupler::testing {
+
+struct StillMpm {
+  double density = 1.2;
+  double pressure = 1.0e5;
+  double gamma = 1.4;
+  double cell_volume = 0;
+  std::int64_t silent_from_step = -1;
+  std::atomic<double> injected_mass{0};
+};
+
+inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_by,
+                              int active_axis) {
+  std::int64_t n = 1;
+  for (int a = 0; a < box.lo_size(); ++a)
+    n *= box.hi(a) - box.lo(a) - (a == active_axis ? shrink_active_by : 0);
+  return n;
+}
+
+/// Serves one session on `endpoint` as "mpm" (1D scenes along x).
+inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint, StillMpm& mpm) {
+  namespace v1 = cosim::v1;
+  cosim::TransportOptions transport;
+  transport.idle_timeout = std::chrono::milliseconds(10000);
+  cosim::Participant participant(context, endpoint, "mpm", transport);
+  v1::Hello hello;
+  hello.set_role(v1::ROLE_MPM_SOLVER);
+  hello.set_software("still_mpm (test)");
+  hello.set_min_major(1);
+  hello.set_max_major(1);
+  participant.connect(hello);
+  std::map<std::string, v1::Region> regions;
+  double time = 0;
+  while (true) {
+    cosim::Message request = participant.receive();
+    cosim::Message reply;
+    const auto& header = request.header;
+    if (header.has_shutdown()) {
+      reply.header.mutable_shutdown_ack();
+      participant.reply(request, std::move(reply));
+      return;
+    }
+    if (header.has_setup()) {
+      for (const auto& r : header.setup().regions()) regions[r.name()] = r;
+      *reply.header.mutable_setup_ack()->mutable_regions() = header.setup().regions();
+      reply.header.mutable_setup_ack()->set_stable_dt(1.0);
+    } else if (header.has_write_output()) {
+      reply.header.mutable_output_written();
+    } else if (header.has_exchange()) {
+      if (mpm.silent_from_step >= 0 &&
+          static_cast<std::int64_t>(header.envelope().step()) >= mpm.silent_from_step)
+        continue;
+      for (const auto& op : header.exchange().operations()) {
+        auto& result = *reply.header.mutable_exchange_result()->add_results();
+        if (op.has_apply()) {
+          result.set_applied(true);
+        } else if (op.has_inject()) {
+          const auto m = cosim::view_array<double>(request, op.inject().group(), "mass");
+          double sum = 0;
+          for (const double v : m.values()) sum += v;
+          mpm.injected_mass = mpm.injected_mass + sum;
+          result.mutable_injected()->set_injected(m.values().size());
+        } else if (op.has_advance()) {
+          time = op.advance().time() + op.advance().dt();
+          result.mutable_advanced()->set_time(time);
+        } else if (op.has_remove()) {
+          result.mutable_removed()->set_group(op.remove().group());
+        } else if (op.has_propose_dt()) {
+          result.mutable_proposed()->set_stable_dt(1.0);
+        } else if (op.has_export_region()) {
+          const std::string& name = op.export_region().region();
+          const auto& box = regions.at(name).box();
+          const double e = mpm.pressure / (mpm.gamma - 1) * mpm.cell_volume;
+          result.mutable_exported()->set_region(name);
+          if (name == "ghost_nodes") {
+            const auto nodes = static_cast<std::size_t>(box_count(box, 0, 0));
+            const auto cells = static_cast<std::size_t>(box_count(box, 1, 0));
+            result.mutable_exported()->set_count(nodes);
+            cosim::add_array(reply, {name, "mass", {}, "kg"},
+                             std::vector<double>(nodes, mpm.density * mpm.cell_volume));
+            cosim::add_array(reply, {name, "momentum", {nodes, 3}, "kg*m/s"},
+                             std::vector<double>(3 * nodes, 0.0));
+            cosim::add_array(reply, {name, "internal_energy", {}, "J"},
+                             std::vector<double>(cells, e));
+          } else {  // mpm_zone: 2 particles per cell
+            const auto n = static_cast<std::size_t>(2 * box_count(box, 0, 0));
+            result.mutable_exported()->set_count(n);
+            cosim::add_array(reply, {name, "mass", {}, "kg"},
+                             std::vector<double>(n, 0.5 * mpm.density * mpm.cell_volume));
+            cosim::add_array(reply, {name, "velocity", {n, 3}, "m/s"},
+                             std::vector<double>(3 * n, 0.0));
+            cosim::add_array(reply, {name, "internal_energy", {}, "J"},
+                             std::vector<double>(n, 0.5 * e));
+          }
+        }
+      }
+    }
+    participant.reply(request, std::move(reply));
+  }
+}
+
+}  // namespace mpfd::coupler::testing

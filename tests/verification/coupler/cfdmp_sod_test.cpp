@@ -1,0 +1,195 @@
+// V1 (Sod's tube) by CFDMP across the FDM/MPM zone boundary
+// (configs/cfdmp_sod_1d.yaml: FDM [0, 0.65], MPM [0.6, 1], w = 5 cells, CFL 0.1)
+// against the exact Riemann solution, next to pure FDM and pure MPM runs of the
+// same scene. All three are read back from their snapshots at t = 0.2 s the
+// same way. Errors: FDM part = mean |rho - exact| over the FDM cells left of
+// the face (x < 0.6); MPM part = volume-weighted mean |rho_p - exact(x_p)| over
+// the particles right of it; reflection = max |p - p*| / p* over the cells in
+// [0.52, 0.58] (the star region next to the face: a wave reflected by the zone
+// boundary would show there). Closed box (walls): the coupled audit's mass and
+// energy over t = 0.52 s (> 1000 steps).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "common/config/scene_loader.hpp"
+#include "common/io/hdf5_file.hpp"
+#include "coupler/run/launch.hpp"
+#include "fdm_solver/standalone_run.hpp"
+#include "mpm_solver/standalone_run.hpp"
+#include "tests/verification/support/exact_riemann.hpp"
+
+namespace mpfd::coupler {
+namespace {
+
+constexpr double kFace = 0.6;
+constexpr double kEnd = 0.2;
+
+const std::string kScene = std::string(MPFD_SOURCE_DIR) + "/configs/cfdmp_sod_1d.yaml";
+
+std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("mpfd-cfdmp-sod-" + name);
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+const verification::ExactRiemann& exact() {
+  static const verification::ExactRiemann solution({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
+  return solution;
+}
+
+struct Profile {
+  std::vector<double> x, density, pressure, volume;
+};
+
+/// The FDM cells (x < limit) of `dir`'s snapshot `index`.
+Profile fdm_cells(const std::filesystem::path& dir, int index, double limit) {
+  char name[32];
+  std::snprintf(name, sizeof name, "snapshot_%06d.h5", index);
+  const io::Hdf5File file(dir / "snapshots" / name, io::Hdf5File::Mode::read);
+  const auto rho = file.read_dataset("/cells/density").values;
+  const auto p = file.read_dataset("/cells/pressure").values;
+  Profile out;
+  const double dx = 1.0 / static_cast<double>(rho.size());
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    const double x = (static_cast<double>(i) + 0.5) * dx;
+    if (x >= limit) continue;
+    out.x.push_back(x);
+    out.density.push_back(rho[i]);
+    out.pressure.push_back(p[i]);
+    out.volume.push_back(dx);
+  }
+  return out;
+}
+
+/// The MPM particles (x >= limit) of `dir`'s snapshot `index`.
+Profile mpm_particles(const std::filesystem::path& dir, int index, double limit) {
+  char name[32];
+  std::snprintf(name, sizeof name, "snapshot_%06d.h5", index);
+  const io::Hdf5File file(dir / "snapshots" / name, io::Hdf5File::Mode::read);
+  const auto position = file.read_dataset("/particles/position").values;
+  const auto rho = file.read_dataset("/particles/density").values;
+  const auto p = file.read_dataset("/particles/pressure").values;
+  const auto m = file.read_dataset("/particles/mass").values;
+  Profile out;
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    if (position[3 * i] < limit) continue;
+    out.x.push_back(position[3 * i]);
+    out.density.push_back(rho[i]);
+    out.pressure.push_back(p[i]);
+    out.volume.push_back(m[i] / rho[i]);
+  }
+  return out;
+}
+
+double mean_density_error(const Profile& f) {
+  double sum = 0, volume = 0;
+  for (std::size_t i = 0; i < f.x.size(); ++i) {
+    sum += std::abs(f.density[i] - exact().sample((f.x[i] - 0.5) / kEnd).density) * f.volume[i];
+    volume += f.volume[i];
+  }
+  return sum / volume;
+}
+
+double star_pressure_deviation(const Profile& f) {
+  double worst = 0;
+  const double p_star = exact().star_pressure();
+  for (std::size_t i = 0; i < f.x.size(); ++i)
+    if (f.x[i] > 0.52 && f.x[i] < 0.58)
+      worst = std::max(worst, std::abs(f.pressure[i] - p_star) / p_star);
+  return worst;
+}
+
+/// x, density and pressure of each profile and of the exact solution, for
+/// cfdmp_sod_figure.sh (docs/figures/cfdmp_sod.svg).
+void write_profiles(const std::filesystem::path& file,
+                    const std::vector<std::pair<std::string, Profile>>& profiles) {
+  std::ofstream out(file);
+  out << "series,x,density,pressure\n";
+  for (const auto& [name, f] : profiles)
+    for (std::size_t i = 0; i < f.x.size(); ++i)
+      out << name << ',' << f.x[i] << ',' << f.density[i] << ',' << f.pressure[i] << '\n';
+  for (int i = 0; i <= 1000; ++i) {
+    const double x = i / 1000.0;
+    const auto e = exact().sample((x - 0.5) / kEnd);
+    out << "exact," << x << ',' << e.density << ',' << e.pressure << '\n';
+  }
+}
+
+nlohmann::json run_coupled(const std::filesystem::path& scene_file,
+                           const std::filesystem::path& out) {
+  LaunchOptions launch;  // embedded
+  CoupledRunOptions options;
+  options.out_dir = out;
+  options.progress = false;
+  launch_run(scene_file, launch, options, "");
+  std::ifstream in(out / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(CfdmpSod, Fast_accuracy_against_exact_and_pure_solvers) {
+  const auto coupled = temp_dir("coupled");
+  run_coupled(kScene, coupled);
+
+  auto scene = config::load_scene(kScene);
+  scene.zones.reset();
+  scene.solver.method = config::Method::fdm;
+  const auto pure_fdm = temp_dir("fdm");
+  fdm::run_standalone(scene, {.scene_file = kScene, .out_dir = pure_fdm});
+  scene.solver.method = config::Method::mpm;
+  const auto pure_mpm = temp_dir("mpm");
+  mpm::run_standalone(scene, {.scene_file = kScene, .out_dir = pure_mpm});
+
+  const int last = 10;  // t = 0.2 s at output interval 0.02 s
+  write_profiles(std::filesystem::temp_directory_path() / "mpfd-cfdmp-sod-profiles.csv",
+                 {{"cfdmp_fdm", fdm_cells(coupled / "fdm", last, kFace)},
+                  {"cfdmp_mpm", mpm_particles(coupled / "mpm", last, kFace)},
+                  {"pure_fdm", fdm_cells(pure_fdm, last, 2.0)},
+                  {"pure_mpm", mpm_particles(pure_mpm, last, 0.0)}});
+  const double fdm_coupled = mean_density_error(fdm_cells(coupled / "fdm", last, kFace));
+  const double fdm_pure = mean_density_error(fdm_cells(pure_fdm, last, kFace));
+  const double mpm_coupled = mean_density_error(mpm_particles(coupled / "mpm", last, kFace));
+  const double mpm_pure = mean_density_error(mpm_particles(pure_mpm, last, kFace));
+  const double reflect_coupled = star_pressure_deviation(fdm_cells(coupled / "fdm", last, kFace));
+  const double reflect_pure = star_pressure_deviation(fdm_cells(pure_fdm, last, kFace));
+  std::printf("FDM part mean |rho err|: coupled %.4e, pure FDM %.4e\n", fdm_coupled, fdm_pure);
+  std::printf("MPM part mean |rho err|: coupled %.4e, pure MPM %.4e\n", mpm_coupled, mpm_pure);
+  std::printf("star-region max |p - p*|/p* near the face: coupled %.4e, pure FDM %.4e\n",
+              reflect_coupled, reflect_pure);
+  // Measured (docs/coupler.md): FDM part 8.81e-3 vs 8.75e-3 pure; MPM part
+  // 1.54e-2 vs 2.52e-2 pure (part of it is fed by the FDM); star-region
+  // deviation 1.28e-2 vs 1.26e-2 pure (no visible reflection from the face).
+  EXPECT_LT(fdm_coupled, 1.05 * fdm_pure);
+  EXPECT_LT(mpm_coupled, 1.0 * mpm_pure);
+  EXPECT_LT(reflect_coupled, 1.1 * reflect_pure);
+}
+
+TEST(CfdmpSod, Fast_closed_box_conservation_over_1000_steps) {
+  std::ifstream in(kScene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  yaml.replace(yaml.find("end: 0.2,"), 9, "end: 0.52,");
+  const auto scene_file = temp_dir("long-scene.yaml");
+  std::ofstream(scene_file) << yaml;
+  const auto summary = run_coupled(scene_file, temp_dir("long"));
+  const double mass = summary["conservation"]["mass"]["relative_error"];
+  const double energy = summary["conservation"]["energy"]["relative_error"];
+  const auto steps = summary["steps"].get<std::int64_t>();
+  std::printf("closed box, %lld steps: mass error %.4e, energy error %.4e\n",
+              static_cast<long long>(steps), mass, energy);
+  EXPECT_GE(steps, 1000);
+  // Measured: mass -1.17e-3, energy -1.53e-3 over 1110 steps. Not round-off:
+  // the FDM's own flux through the face is not the coupler's (4-13) flux
+  // (coupler/handshake/README.md, open points), and linear MPM loses energy.
+  EXPECT_LT(std::abs(mass), 2e-3);
+  EXPECT_LT(std::abs(energy), 5e-3);
+}
+
+}  // namespace
+}  // namespace mpfd::coupler
