@@ -399,11 +399,11 @@ void MpmSolver::integrate_nodes(double dt) {
     });
   }
   if (settings_.shear_damping > 0.0) add_shear_damping(dt);
-  if (non_reflecting_) add_boundary_tractions(dt);
   for_each_node(nodes, [&](std::size_t n) {
     for (int a = 0; a < 3; ++a) momentum[a][n] += force[a][n] * dt;  // (2-13)
   });
   if (contact_) advance_shared_nodes(dt);
+  if (non_reflecting_) add_boundary_tractions(dt);
   apply_node_constraints(dt);
   // From here on the arrays hold velocities and accelerations, p / m and f / m,
   // so the particle passes only multiply. Only massless nodes are skipped: a
@@ -496,25 +496,39 @@ void MpmSolver::add_shear_damping(double dt) {
 
 void MpmSolver::add_boundary_tractions(double dt) {
   const auto& g = grid_.grid();
+  auto& cf = contact_fields_;
   for_each_face_node([&](std::size_t n, int axis, int side, BoundaryKind kind) {
     if (kind != BoundaryKind::non_reflecting) return;
     const double m = grid_.mass[n];
     if (!(m > 0.0)) return;
     // W (2-59), (2-60) as nodal forces: traction times the node's face area
-    // A_I = 2 V_I / h (V_I = sum N V_p: half a cell of particles behind the face),
-    // so rho A_I c v = 2 (sum N m_p c) v / h; the far field pushes with p of `initial`.
+    // A_I = 2 V_I / h (V_I = sum N V_p: half a cell of particles behind the
+    // face), so rho A_I c = 2 (sum N m_p c) / h = k. The dashpot acts on the
+    // end-of-step velocity, p^{n+1} = p* / (1 + k dt / m): stable for any step
+    // (explicitly, k dt / m = 2 CFL would stop the node every step at CFL 0.5).
+    // The far field pushes with the pressure of `initial`.
     const double scale = 2.0 / g.spacing()[axis];
     const double outward = side == 0 ? -1.0 : 1.0;
-    const double v_normal = grid_.momentum[axis][n] / m * outward;
     for (int c = 0; c < 3; ++c) {
-      const double normal = c == axis ? outward : 0.0;
-      const double v = grid_.momentum[c][n] / m;
-      const double traction = far_field_pressure_ * face_sums_[0][n] * normal +
-                              face_sums_[1][n] * v_normal * normal +
-                              face_sums_[2][n] * (v - v_normal * normal);
-      const double f = -scale * traction;
-      grid_.force[c][n] += f;
-      ledger_.momentum[c] -= f * dt;  // the face's impulse
+      const double pressure_force =
+          c == axis ? -scale * far_field_pressure_ * face_sums_[0][n] * outward : 0.0;
+      const double k = scale * (c == axis ? face_sums_[1][n] : face_sums_[2][n]);
+      const double keep = 1.0 / (1.0 + k * dt / m);
+      const double before = grid_.momentum[c][n];
+      const double after = (before + pressure_force * dt) * keep;
+      grid_.momentum[c][n] = after;
+      grid_.force[c][n] += (after - before) / dt;  // so that (2-15) agrees
+      ledger_.momentum[c] -= after - before;       // the face's impulse
+      if (contact_ && cf.shared[n] >= 0) {
+        for (int b = 0; b < cf.bodies; ++b) {
+          const std::size_t at = cf.at(cf.shared[n], b);
+          const double share = cf.mass[at] / m;
+          const double body_before = cf.momentum[c][at];
+          const double body_after = (body_before + share * pressure_force * dt) * keep;
+          cf.momentum[c][at] = body_after;
+          cf.force[c][at] += (body_after - body_before) / dt;
+        }
+      }
     }
   });
 }

@@ -126,7 +126,7 @@ class MpmSolver {
   void integrate_nodes(double dt);
   /// Adds the shear-mode damping forces, T (2-47), over the cells holding particles.
   void add_shear_damping(double dt);
-  /// Adds the non-reflecting faces' tractions to their nodes, W (2-59), (2-60).
+  /// The non-reflecting faces' tractions on p^{n+1} of their nodes, W (2-59), (2-60).
   void add_boundary_tractions(double dt);
   /// At shared nodes: hands the external forces to the bodies by mass and
   /// replaces (2-13) by the contact update, T (2-25)-(2-32).
