@@ -744,45 +744,16 @@ void MpmSolver::update_and_remap_velocities(double dt) {
                       }
                     });
                   });
-  if (contact_) {
-    // The remapped momenta corrected by contact once more (Nairn), so that the
-    // strain increments (2-18) see no interpenetration.
-    using contact::Vec;
-    const int bodies = cf.bodies;
-    parallel_for(cf.count(), [&](std::size_t index) {
-      const auto k = static_cast<std::int32_t>(index);
-      std::array<double, ContactFields::kMaxBodies> mass{};
-      std::array<Vec<3>, ContactFields::kMaxBodies> p{}, grad{}, change{};
-      std::array<int, ContactFields::kMaxBodies> which{};
-      int present = 0, normal = 0;
-      for (int b = 0; b < bodies; ++b) {
-        const std::size_t at = cf.at(k, b);
-        if (!(cf.mass[at] > 0.0)) continue;
-        mass[present] =
-            cf.mass[at] * (body_fixed_[static_cast<std::size_t>(b)] != 0 ? kFixedMassFactor : 1.0);
-        for (int a = 0; a < 3; ++a) {
-          p[present](a) = cf.remapped[a][at];
-          grad[present](a) = cf.gradient[a][at];
-        }
-        if (present == 0 || normal_rank_[static_cast<std::size_t>(b)] <
-                                normal_rank_[static_cast<std::size_t>(which[normal])])
-          normal = present;
-        which[present++] = b;
-      }
-      const auto count = static_cast<std::size_t>(present);
-      const contact::NodeBodies<3> node{std::span<const double>(mass.data(), count),
-                                        std::span<const Vec<3>>(p.data(), count),
-                                        std::span<const Vec<3>>(grad.data(), count)};
-      contact::contact_momentum_changes<3>(
-          node, {.friction = friction_, .normal_body = static_cast<std::size_t>(normal)},
-          std::span<Vec<3>>(change.data(), count));
-      for (int i = 0; i < present; ++i) {
-        const std::size_t at = cf.at(k, which[i]);
-        const double inverse = 1.0 / cf.mass[at];
-        for (int a = 0; a < 3; ++a) cf.remapped[a][at] = (p[i](a) + change[i](a)) * inverse;
-      }
+  // Per-body remapped velocities, not corrected by contact a second time (as
+  // Nairn does): the thesis corrects at the momentum update only, and the second
+  // correction, which changes the strain rates but not the particle velocities,
+  // created energy (two elastic disks: +16 % at 20 cells, +9 % at 80; without it
+  // the error falls with h: 6.5, 4.2, 2.2 %).
+  if (contact_)
+    parallel_for(cf.mass.size(), [&](std::size_t at) {
+      const double inverse = cf.mass[at] > 0.0 ? 1.0 / cf.mass[at] : 0.0;
+      for (int a = 0; a < 3; ++a) cf.remapped[a][at] *= inverse;
     });
-  }
   for_each_node(grid_.node_count(), [&](std::size_t n) {
     const double m = grid_.mass[n];
     const double inverse = m > 0.0 ? 1.0 / m : 0.0;

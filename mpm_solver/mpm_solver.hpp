@@ -13,7 +13,7 @@
 //                             v_p += sum f_I / m_I N_Ip dt (2-15) (f^b + f^{b,c} of the
 //                             particle's body at shared nodes), and in the same particle
 //                             pass (MUSL) the remap sum m_p N_Ip v_p^{n+1} (2-17), per body
-//                             at shared nodes, where contact corrects it once more;
+//                             at shared nodes;
 //   5.                        then / m_I and the face conditions
 //   6. update_particles()     x_p += sum p_I^{n+1} / m_I N_Ip dt (2-16); strain and spin
 //                             increments (2-18), (2-19) from the step-5 (MUSL) or
