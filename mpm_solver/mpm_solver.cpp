@@ -432,7 +432,7 @@ void MpmSolver::integrate_nodes(double dt) {
 
 namespace {
 
-/// The shear-mode damping of every cell in `cells` whose lower corner is a
+/// The shear-mode damping of every cell that holds particles and whose lower corner is a
 /// node of the block at `slot`, for Dim active axes `axes`.
 template <int Dim>
 void damp_block_cells(SparseGrid& grid, std::size_t slot, const int (&axes)[3],
