@@ -1,25 +1,26 @@
 #pragma once
 // Explicit MPM on a sparse background grid, T §2.1.2, one step = (2-9)-(2-21):
 //
-//   1. rebuild_grid()         blocks where particles are; particles binned by block
-//   2. particles_to_grid()    m_I (2-12), p_I (2-9), f_I = f_int (2-10)
-//                             [contact hook: per-body nodal mass, momentum and
-//                             mass gradient, T (2-22)-(2-32), are gathered here]
-//   3. integrate_nodes()      p_I^{n+1} = p_I + f_I dt (2-13), then the face conditions
-//                             [hook: a non-reflecting boundary adds its body force to
-//                             f_I before (2-13); shear-mode damping (2-33)-(2-48) and
-//                             the contact correction act on f_I, p_I^{n+1} after it,
-//                             over the cells' 8 nodes, before step 4 reads them]
+//   1. rebuild_grid()         blocks where particles are; particles binned by block;
+//                             with contact, the nodes two bodies' stencils reach are marked
+//   2. particles_to_grid()    m_I (2-12), p_I (2-9), f_I = f_int (2-10); at marked nodes
+//                             also per body m^b, p^b, f^b and the mass gradient (2-23)
+//   3. integrate_nodes()      f_I += gravity, the shear-mode damping (2-33)-(2-48) and
+//                             the non-reflecting tractions (W §2.4); p_I^{n+1} = p_I + f_I dt
+//                             (2-13), at shared nodes per body with the contact force
+//                             (2-25)-(2-32); then faces and fixed particle sets
 //   4. update_and_remap_velocities()
-//                             v_p += sum f_I / m_I N_Ip dt (2-15), and in the same
-//                             particle pass (MUSL) the remap sum m_p N_Ip v_p^{n+1} (2-17);
+//                             v_p += sum f_I / m_I N_Ip dt (2-15) (f^b + f^{b,c} of the
+//                             particle's body at shared nodes), and in the same particle
+//                             pass (MUSL) the remap sum m_p N_Ip v_p^{n+1} (2-17), per body
+//                             at shared nodes;
 //   5.                        then / m_I and the face conditions
 //   6. update_particles()     x_p += sum p_I^{n+1} / m_I N_Ip dt (2-16); strain and spin
 //                             increments (2-18), (2-19) from the step-5 (MUSL) or
-//                             step-3 (USL) nodal velocities; density (2-20); bulk
-//                             viscosity; Jaumann rotation and the constitutive
-//                             model (2-21) with the program burn (3-1), (3-2)
-//   7. remove_outflow()       particles that left through an outflow face
+//                             step-3 (USL) nodal velocities (its body's at shared nodes);
+//                             density (2-20); bulk viscosity; Jaumann rotation and the
+//                             constitutive model (2-21) with the program burn (3-1), (3-2)
+//   7. remove_outflow()       particles that left through an outflow or non-reflecting face
 //
 // In a coupled run (mpm_solver serve) a coupler's nodal contributions
 // (queue_node_load, T (4-7)...(4-9), T §4.3 steps 3 and 5) act between steps 2
@@ -38,6 +39,7 @@
 
 #include "common/config/scene.hpp"
 #include "mpm_solver/bulk_viscosity.hpp"
+#include "mpm_solver/contact_fields.hpp"
 #include "mpm_solver/material/constitutive_model.hpp"
 #include "mpm_solver/particle_batch.hpp"
 #include "mpm_solver/particle_generation.hpp"
@@ -52,6 +54,7 @@ struct MpmSettings {
   config::MpmUpdate update = config::MpmUpdate::musl;
   double bulk_viscosity_quadratic = 1.5;  ///< c0
   double bulk_viscosity_linear = 0.06;    ///< c1
+  double shear_damping = 0.0;             ///< Q_s of T (2-48); 0: off
 
   /// The settings a scene asks for.
   static MpmSettings from_scene(const config::Scene& scene);
@@ -80,9 +83,11 @@ struct MpmTotals {
 
 /// What crossed the domain's faces since the start (positive: out of the domain).
 struct BoundaryLedger {
-  double mass = 0.0;                 ///< carried out by removed particles [kg]
-  std::array<double, 3> momentum{};  ///< carried out, minus the impulse walls gave [kg m/s]
-  double energy = 0.0;               ///< kinetic + internal energy carried out [J]
+  double mass = 0.0;  ///< carried out by removed particles [kg]
+  /// carried out, minus the impulse walls, non-reflecting faces and fixed particle
+  /// sets gave [kg m/s] (gravity's impulse is not booked)
+  std::array<double, 3> momentum{};
+  double energy = 0.0;  ///< kinetic + internal energy carried out [J]
   std::int64_t particles_removed = 0;
 };
 
@@ -160,21 +165,31 @@ class MpmSolver {
   void rebuild_grid();
   /// GIMP half-widths of particle p per axis [grid units]: its body's, times F_aa for cpGIMP.
   void particle_half_width(std::size_t p, double half_width[3]) const;
+  void mark_shared_nodes();
   void particles_to_grid();
   void integrate_nodes(double dt);
+  /// Adds the shear-mode damping forces, T (2-47), over the cells holding particles.
+  void add_shear_damping(double dt);
+  /// The non-reflecting faces' tractions on p^{n+1} of their nodes, W (2-59), (2-60).
+  void add_boundary_tractions(double dt);
+  /// At shared nodes: hands the external forces to the bodies by mass and
+  /// replaces (2-13) by the contact update, T (2-25)-(2-32).
+  void advance_shared_nodes(double dt);
+  /// Zeroes the constrained components at nodes on fixed and symmetry faces and
+  /// at nodes of fixed particle sets; resets the force so that (2-15) agrees with (2-13).
+  void apply_node_constraints(double dt);
+  void apply_face_conditions_to_remap();
   void update_and_remap_velocities(double dt);
   void update_particles(double dt);
   void remove_outflow();
-  /// Zeroes the constrained components of `field` at nodes on fixed and
-  /// symmetry faces; with `force` and dt also keeps (2-15) consistent with (2-13).
-  void apply_face_conditions(std::array<std::vector<double>, 3>& field,
-                             std::array<std::vector<double>, 3>* force, double dt);
   void compute_stable_dt();
   /// The model of `material`, made (and the history stride widened) on first use.
   ConstitutiveModel& model_for(std::size_t material);
   /// The body injected particles of `material` join, made on first use.
   std::uint16_t injected_body(std::size_t material);
   void apply_node_loads();
+  template <class Fn>
+  void for_each_face_node(const Fn& fn) const;
 
   MpmSettings settings_;
   std::array<config::BoundaryKind, 6> faces_{};
@@ -204,6 +219,22 @@ class MpmSolver {
   std::int64_t steps_ = 0;
   double particle_updates_ = 0.0;
   BoundaryLedger ledger_;
+
+  // Physics the scene switches on; each costs nothing when off.
+  std::array<double, 3> gravity_{};
+  bool contact_ = false;
+  double friction_ = 0.0;
+  std::vector<int> normal_rank_;  ///< per body: smaller gives the contact normal first
+  ContactFields contact_fields_;
+  std::vector<std::uint8_t> body_fixed_;  ///< per body
+  bool has_fixed_ = false;
+  std::vector<double> fixed_mass_;  ///< per node: sum N m_p of fixed particles
+  std::vector<double> cell_mass_;   ///< per node: sum m_p of the cell it is the lower corner of
+  std::vector<double> cell_sound_speed_;  ///< per node: the largest c_p in that cell
+  bool non_reflecting_ = false;
+  double far_field_pressure_ = 0.0;               ///< p of `initial` [Pa]
+  std::vector<double> body_shear_modulus_;        ///< per body [Pa], for c_s
+  std::array<std::vector<double>, 3> face_sums_;  ///< per node: sum N V_p, N m_p c_p, N m_p c_s
 };
 
 }  // namespace mpfd::mpm

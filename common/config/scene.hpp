@@ -100,6 +100,9 @@ struct Body {
   Shape shape;
   MaterialState state;
   int particles_per_axis = 2;  ///< MPM particles per cell along each active axis
+  /// MPM: a fixed particle set (a clamp): its particles keep zero velocity and
+  /// position, and the grid nodes they touch are held at rest (docs/mpm.md).
+  bool fixed = false;
 };
 
 enum class Burn { program, instantaneous };
@@ -114,7 +117,8 @@ struct Charge {
   int particles_per_axis = 2;
 };
 
-enum class BoundaryKind { outflow, wall, symmetry };
+/// non_reflecting: MPM only, Lysmer-Kuhlemeyer viscous tractions (W §2.4); open to particles.
+enum class BoundaryKind { outflow, wall, symmetry, non_reflecting };
 enum class Face : std::size_t { x_lower, x_upper, y_lower, y_upper, z_lower, z_upper };
 
 struct Boundaries {
@@ -156,11 +160,22 @@ struct FdmOptions {
   int tracers_per_axis = 2;  ///< massless tracers per cell and active axis, T §3.2.2 [-]
 };
 
+/// Multi-velocity-field contact between the MPM bodies (T §2.1.3); absent: one
+/// velocity field, i.e. no-slip contact.
+struct MpmContact {
+  double friction = 0.0;  ///< Coulomb µ of T (2-32) [-]
+  std::optional<std::string>
+      normal_body;  ///< body whose surface gives the normal; absent: stiffest
+};
+
 struct MpmOptions {
   ShapeFunction shape_function = ShapeFunction::linear;
   MpmUpdate update = MpmUpdate::musl;
   double bulk_viscosity_quadratic = 1.5;  ///< c0 of the artificial bulk viscosity (S) [-]
   double bulk_viscosity_linear = 0.06;    ///< c1 of the artificial bulk viscosity (S) [-]
+  Vec3 gravity{};                         ///< body force per unit mass [m/s^2]
+  double shear_damping = 0.0;             ///< Q_s of T (2-48) [-]; 0: no shear-mode damping
+  std::optional<MpmContact> contact;
 };
 
 struct Solver {

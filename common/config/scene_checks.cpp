@@ -211,6 +211,30 @@ void check_zones(const Scene& s, Diagnostics& d) {
   }
 }
 
+// The non-reflecting face and the MPM options that name bodies mean something only to MPM.
+void check_mpm_only(const Scene& s, Diagnostics& d) {
+  if (!d.clean("boundaries") || !d.clean("solver")) return;
+  const char* faces[] = {"x_lower", "x_upper", "y_lower", "y_upper", "z_lower", "z_upper"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (s.boundaries.faces[i] == BoundaryKind::non_reflecting && s.solver.method != Method::mpm) {
+      d.error(std::string("boundaries.") + faces[i],
+              "non_reflecting is an MPM boundary (W §2.4); expected outflow, wall or symmetry "
+              "with solver.method other than mpm");
+    }
+  }
+  if (s.solver.mpm.contact && s.solver.mpm.contact->normal_body) {
+    const std::string& name = *s.solver.mpm.contact->normal_body;
+    std::vector<std::string> names;
+    for (const Body& b : s.bodies) names.push_back(b.name);
+    for (const Charge& c : s.charges) names.push_back(c.name);
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      d.error("solver.mpm.contact.normal_body", "no body or charge named '" + name + "'" +
+                                                    did_you_mean(name, names) +
+                                                    " (defined: " + join(names) + ")");
+    }
+  }
+}
+
 }  // namespace
 
 void check_scene(const Scene& scene, Diagnostics& diagnostics) {
@@ -218,6 +242,7 @@ void check_scene(const Scene& scene, Diagnostics& diagnostics) {
   check_names(scene, diagnostics);
   check_burn(scene, diagnostics);
   check_output(scene, diagnostics);
+  check_mpm_only(scene, diagnostics);
   if (!diagnostics.clean("domain")) return;
   check_inside_domain(scene, diagnostics);
   check_zones(scene, diagnostics);

@@ -112,7 +112,11 @@ std::shared_ptr<const Table<Body>> body_table() {
       *t, [](auto& b) -> auto& { return b.state; });
   t->optional("particles_per_axis", &Body::particles_per_axis, kParticlesPerAxis,
               "MPM particles per cell along each active axis (2 gives 2, 4 and 8 particles per "
-              "cell in 1D, 2D and 3D)");
+              "cell in 1D, 2D and 3D)")
+      .optional("fixed", &Body::fixed, Boolean{},
+                "MPM: a fixed particle set (e.g. a clamp at a plate's edge): its particles keep "
+                "zero velocity and the grid nodes they touch are held at rest; with "
+                "solver.mpm.contact only its own velocity field is");
   return t;
 }
 
@@ -137,10 +141,14 @@ std::shared_ptr<const Table<Charge>> charge_table() {
 std::shared_ptr<const Table<Boundaries>> boundaries_table() {
   auto t = table<Boundaries>("boundaries",
                              "The condition on each face of the domain. outflow: zero-gradient, "
-                             "open; wall: rigid, reflecting; symmetry: mirror plane.");
+                             "open; wall: rigid, reflecting; symmetry: mirror plane; "
+                             "non_reflecting (solver.method mpm only): open, with the viscous "
+                             "tractions -rho c_p v_n and -rho c_s v_t of W §2.4 and the pressure "
+                             "of `initial` as the far field.");
   const Enum<BoundaryKind> kind({{"outflow", BoundaryKind::outflow},
                                  {"wall", BoundaryKind::wall},
-                                 {"symmetry", BoundaryKind::symmetry}});
+                                 {"symmetry", BoundaryKind::symmetry},
+                                 {"non_reflecting", BoundaryKind::non_reflecting}});
   const char* axes[] = {"x", "y", "z"};
   for (std::size_t i = 0; i < 6; ++i) {
     const std::string axis = axes[i / 2];
@@ -186,6 +194,17 @@ std::shared_ptr<const Table<Solver>> solver_table() {
   fdm->optional("tracers_per_axis", &FdmOptions::tracers_per_axis, Integer(Range::closed(1, 8)),
                 "massless tracers per cell along each active axis, seeded when the scene has "
                 "more than one material in the FDM zone, T §3.2.2");
+  auto contact = table<MpmContact>(
+      "solver.mpm.contact",
+      "Bardenhagen's contact, T §2.1.3: every body and charge gets its own velocity field where "
+      "two or more meet; they may slide (Coulomb friction) and separate, not interpenetrate.");
+  contact
+      ->optional("friction", &MpmContact::friction, Number("-", Range::at_least(0)),
+                 "Coulomb coefficient µ, T (2-32)")
+      .optional("normal_body", &MpmContact::normal_body, Name{},
+                "the body or charge whose surface gives the common normal, T (2-24); absent: "
+                "fixed bodies first, then the largest rho c^2 at the start, then the first "
+                "listed");
   auto mpm = table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
   mpm->optional(
          "shape_function", &MpmOptions::shape_function,
@@ -204,7 +223,15 @@ std::shared_ptr<const Table<Solver>> solver_table() {
                 "(S; l the smallest cell size, d the volumetric strain rate); 0 with the linear "
                 "term 0 turns it off")
       .optional("bulk_viscosity_linear", &MpmOptions::bulk_viscosity_linear,
-                Number("-", Range::at_least(0)), "c1 of the artificial bulk viscosity (S)");
+                Number("-", Range::at_least(0)), "c1 of the artificial bulk viscosity (S)")
+      .optional("gravity", &MpmOptions::gravity, Fixed<Number, 3>(Number("m/s^2")),
+                "body force per unit mass on every particle")
+      .optional("shear_damping", &MpmOptions::shear_damping, Number("-", Range::at_least(0)),
+                "Q_s of the shear-mode damping, T (2-33)-(2-48); 0 turns it off (the thesis "
+                "gives no value; 0.1 holds still air, docs/mpm.md)")
+      .optional("contact", &MpmOptions::contact, Nested<MpmContact>(contact),
+                "multi-velocity-field contact between the bodies; absent: one velocity field "
+                "(no-slip)");
   auto t = table<Solver>("solver", "Which method runs the scene, and its options.");
   t->optional("method", &Solver::method,
               Enum<Method>({{"fdm", Method::fdm},

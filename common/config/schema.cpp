@@ -135,6 +135,14 @@ std::optional<std::string> Name::read(const Cursor& c) const {
   return text;
 }
 
+std::optional<bool> Boolean::read(const Cursor& c) const {
+  const std::string text = c.node.IsScalar() ? c.node.Scalar() : "";
+  if (text == "true") return true;
+  if (text == "false") return false;
+  c.expected(describe());
+  return std::nullopt;
+}
+
 bool check_keys(const Cursor& c, const std::vector<std::string>& allowed) {
   if (!c.node.IsMap()) {
     c.expected("a map with keys: " + join(allowed));

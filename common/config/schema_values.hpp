@@ -99,6 +99,17 @@ class Name {
   std::string unit() const { return ""; }
 };
 
+/// true or false.
+class Boolean {
+ public:
+  using Value = bool;
+  std::optional<bool> read(const Cursor& c) const;
+  std::string describe() const { return "true or false"; }
+  std::string plural() const { return "booleans"; }
+  std::string unit() const { return ""; }
+  std::string format(bool v) const { return v ? "true" : "false"; }
+};
+
 /// One of a fixed set of words, each standing for a C++ enumerator.
 template <class E>
 class Enum {

@@ -44,6 +44,23 @@ TEST(SceneChecks, Undefined_material_suggests_a_defined_one) {
                           "you mean 'air'? (defined: air, tnt)"));
 }
 
+TEST(SceneChecks, Non_reflecting_faces_are_mpm_only_and_the_normal_body_exists) {
+  EXPECT_THAT(
+      errors_of(kBlast + "boundaries: {y_upper: non_reflecting}\n"),
+      ElementsAre("scene.yaml:11:23: boundaries.y_upper: non_reflecting is an MPM boundary (W "
+                  "§2.4); expected outflow, wall or symmetry with solver.method other than "
+                  "mpm"));
+  EXPECT_THAT(
+      errors_of(kBlast +
+                "bodies:\n  - {name: plate, material: air, density: 1, "
+                "pressure: 1, " +
+                kBall + "}\nsolver: {method: mpm, mpm: {contact: {normal_body: plat}}}\n"),
+      ElementsAre("scene.yaml:13:52: solver.mpm.contact.normal_body: no body or charge named "
+                  "'plat'; did you mean 'plate'? (defined: plate)"));
+  EXPECT_NO_THROW(parse_scene(
+      kBlast + "boundaries: {y_upper: non_reflecting}\nsolver: {method: mpm}\n", "scene.yaml"));
+}
+
 TEST(SceneChecks, Charge_material_must_be_an_explosive) {
   EXPECT_THAT(errors_of(kBlast + "charges:\n  - {name: c, material: air, " + kBall +
                         ", detonation_point: [0.5, 0.5, 0]}\n"),

@@ -94,7 +94,7 @@ TEST(SceneErrors, Map_where_a_value_belongs_and_nothing_where_a_value_belongs) {
 TEST(SceneErrors, Unknown_word_lists_the_allowed_words_and_suggests_one) {
   EXPECT_THAT(errors_of(kMinimalScene + "boundaries: {x_upper: walls}\n"),
               ElementsAre("scene.yaml:8:23: boundaries.x_upper: expected one of: outflow, wall, "
-                          "symmetry, got walls; did you mean 'wall'?"));
+                          "symmetry, non_reflecting, got walls; did you mean 'wall'?"));
 }
 
 TEST(SceneErrors, Unknown_eos_type_suggests_a_known_one) {

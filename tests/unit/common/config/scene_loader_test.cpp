@@ -57,6 +57,32 @@ TEST(SceneLoader, Defaults_fill_what_the_scene_leaves_out) {
   EXPECT_EQ(s.solver.fdm.artificial_viscosity, 1.0);
   EXPECT_EQ(s.solver.mpm.shape_function, ShapeFunction::linear);
   EXPECT_EQ(s.solver.mpm.update, MpmUpdate::musl);
+  EXPECT_EQ(s.solver.mpm.gravity, (Vec3{0, 0, 0}));
+  EXPECT_EQ(s.solver.mpm.shear_damping, 0.0);
+  EXPECT_FALSE(s.solver.mpm.contact.has_value());
+}
+
+TEST(SceneLoader, Mpm_physics_keys_arrive_in_the_typed_scene) {
+  const Scene s = parse_scene(
+      kMinimalScene +
+          "bodies:\n  - {name: clamp, material: air, density: 1, pressure: 1, fixed: true,\n"
+          "     shape: {box: {lower: [0, 0, 0], upper: [0.1, 1, 1]}}}\n"
+          "boundaries: {x_upper: non_reflecting}\n"
+          "solver:\n  method: mpm\n  mpm: {gravity: [0, -9.81, 0], shear_damping: 0.1,\n"
+          "        contact: {friction: 0.2, normal_body: clamp}}\n",
+      "mpm.yaml");
+  EXPECT_TRUE(s.bodies.at(0).fixed);
+  EXPECT_EQ(s.boundaries[Face::x_upper], BoundaryKind::non_reflecting);
+  EXPECT_EQ(s.solver.mpm.gravity, (Vec3{0, -9.81, 0}));
+  EXPECT_EQ(s.solver.mpm.shear_damping, 0.1);
+  ASSERT_TRUE(s.solver.mpm.contact.has_value());
+  EXPECT_EQ(s.solver.mpm.contact->friction, 0.2);
+  EXPECT_EQ(s.solver.mpm.contact->normal_body, "clamp");
+  const Scene plain =
+      parse_scene(kMinimalScene + "solver: {method: mpm, mpm: {contact: {}}}\n", "mpm.yaml");
+  ASSERT_TRUE(plain.solver.mpm.contact.has_value());
+  EXPECT_EQ(plain.solver.mpm.contact->friction, 0.0);
+  EXPECT_FALSE(plain.solver.mpm.contact->normal_body.has_value());
 }
 
 TEST(SceneLoader, Every_section_arrives_in_the_typed_scene) {
