@@ -73,7 +73,8 @@ MpmSettings MpmSettings::from_scene(const config::Scene& scene) {
           .update = scene.solver.mpm.update,
           .bulk_viscosity_quadratic = scene.solver.mpm.bulk_viscosity_quadratic,
           .bulk_viscosity_linear = scene.solver.mpm.bulk_viscosity_linear,
-          .shear_damping = scene.solver.mpm.shear_damping};
+          .shear_damping = scene.solver.mpm.shear_damping,
+          .reference_pressure = scene.solver.mpm.reference_pressure};
 }
 
 MpmSolver::MpmSolver(const config::Scene& scene, MpmSettings settings)
@@ -330,8 +331,12 @@ void MpmSolver::particles_to_grid() {
           const double volume = m / ps.density[p];
           const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
           const int body = ps.body[p];
-          // sigma = s - (p + q) I, tension positive.
-          const double pq = ps.pressure[p] + ps.bulk_viscosity[p];
+          // sigma + p_ref I = s - (p + q - p_ref) I, tension positive. The particle
+          // sum of V_p grad N_I(x_p) vanishes only on the particles' initial lattice;
+          // off it a uniform p pushes the nodes (a negative stiffness ~ p / h^2 that
+          // makes still 2D air grow, docs/mpm.md), which p_ref, the ambient
+          // pressure, takes away.
+          const double pq = ps.pressure[p] + ps.bulk_viscosity[p] - settings_.reference_pressure;
           const auto& d = ps.deviatoric_stress;
           const double sigma[3][3] = {{d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
                                       {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
@@ -516,12 +521,14 @@ void MpmSolver::add_boundary_tractions(double dt) {
     // face), so rho A_I c = 2 (sum N m_p c) / h = k. The dashpot acts on the
     // end-of-step velocity, p^{n+1} = p* / (1 + k dt / m): stable for any step
     // (explicitly, k dt / m = 2 CFL would stop the node every step at CFL 0.5).
-    // The far field pushes with the pressure of `initial`.
+    // The far field pushes with the pressure of `initial`, less p_ref.
     const double scale = 2.0 / g.spacing()[axis];
     const double outward = side == 0 ? -1.0 : 1.0;
     for (int c = 0; c < 3; ++c) {
       const double pressure_force =
-          c == axis ? -scale * far_field_pressure_ * face_sums_[0][n] * outward : 0.0;
+          c == axis ? -scale * (far_field_pressure_ - settings_.reference_pressure) *
+                          face_sums_[0][n] * outward
+                    : 0.0;
       const double k = scale * (c == axis ? face_sums_[1][n] : face_sums_[2][n]);
       const double keep = 1.0 / (1.0 + k * dt / m);
       const double before = grid_.momentum[c][n];

@@ -55,6 +55,7 @@ struct MpmSettings {
   double bulk_viscosity_quadratic = 1.5;  ///< c0
   double bulk_viscosity_linear = 0.06;    ///< c1
   double shear_damping = 0.0;             ///< Q_s of T (2-48); 0: off
+  double reference_pressure = 0.0;        ///< p_ref off the stress in the internal force [Pa]
 
   /// The settings a scene asks for.
   static MpmSettings from_scene(const config::Scene& scene);

@@ -175,6 +175,7 @@ struct MpmOptions {
   double bulk_viscosity_linear = 0.06;    ///< c1 of the artificial bulk viscosity (S) [-]
   Vec3 gravity{};                         ///< body force per unit mass [m/s^2]
   double shear_damping = 0.0;             ///< Q_s of T (2-48) [-]; 0: no shear-mode damping
+  double reference_pressure = 0.0;        ///< p_ref taken off the stress in the internal force [Pa]
   std::optional<MpmContact> contact;
 };
 

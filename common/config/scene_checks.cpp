@@ -222,6 +222,13 @@ void check_mpm_only(const Scene& s, Diagnostics& d) {
               "with solver.method other than mpm");
     }
   }
+  // A coupled zone's nodes take the FDM side's loads at the full pressure.
+  if (s.solver.mpm.reference_pressure > 0.0 && s.solver.method != Method::mpm) {
+    d.error("solver.mpm.reference_pressure",
+            "expected 0 with solver.method other than mpm (the coupler's node loads carry the "
+            "full pressure), got " +
+                num(s.solver.mpm.reference_pressure));
+  }
   if (s.solver.mpm.contact && s.solver.mpm.contact->normal_body) {
     const std::string& name = *s.solver.mpm.contact->normal_body;
     std::vector<std::string> names;

@@ -228,7 +228,16 @@ std::shared_ptr<const Table<Solver>> solver_table() {
                 "body force per unit mass on every particle")
       .optional("shear_damping", &MpmOptions::shear_damping, Number("-", Range::at_least(0)),
                 "Q_s of the shear-mode damping, T (2-33)-(2-48); 0 turns it off (the thesis "
-                "gives no value; 0.1 holds still air, docs/mpm.md)")
+                "gives no value; with reference_pressure or GIMP, 0.1 keeps still air at rest, "
+                "docs/mpm.md)")
+      .optional("reference_pressure", &MpmOptions::reference_pressure,
+                Number("Pa", Range::at_least(0)),
+                "p_ref: the internal force is computed from sigma + p_ref I, as if every empty "
+                "region and every face were held at p_ref (an outflow face then has gas at "
+                "p_ref beyond it; a non_reflecting face's far field pushes with its pressure "
+                "less p_ref). Valid where the bodies are surrounded by gas at p_ref, e.g. the "
+                "ambient pressure of air that fills the domain; not with a free surface to "
+                "vacuum. Removes the growth of still 2D air (docs/mpm.md). 0: off; mpm only")
       .optional("contact", &MpmOptions::contact, Nested<MpmContact>(contact),
                 "multi-velocity-field contact between the bodies; absent: one velocity field "
                 "(no-slip)");

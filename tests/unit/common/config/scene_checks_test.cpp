@@ -61,6 +61,14 @@ TEST(SceneChecks, Non_reflecting_faces_are_mpm_only_and_the_normal_body_exists) 
       kBlast + "boundaries: {y_upper: non_reflecting}\nsolver: {method: mpm}\n", "scene.yaml"));
 }
 
+TEST(SceneChecks, Reference_pressure_is_mpm_only) {
+  const std::string options = "mpm: {reference_pressure: 101325}}\n";
+  EXPECT_THAT(errors_of(kBlast + "solver: {method: afdmp, " + options),
+              ElementsAre(::testing::HasSubstr(
+                  "solver.mpm.reference_pressure: expected 0 with solver.method other than mpm")));
+  EXPECT_NO_THROW(parse_scene(kBlast + "solver: {method: mpm, " + options, "scene.yaml"));
+}
+
 TEST(SceneChecks, Charge_material_must_be_an_explosive) {
   EXPECT_THAT(errors_of(kBlast + "charges:\n  - {name: c, material: air, " + kBall +
                         ", detonation_point: [0.5, 0.5, 0]}\n"),
