@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "mpm_solver/material/shear_modulus.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 
 namespace mpfd::mpm {
@@ -27,6 +28,15 @@ ConstitutiveModel& MpmSolver::model_for(std::size_t material) {
   return *models_[material];
 }
 
+void MpmSolver::refuse_coupling_with_contact(const char* what) const {
+  // Contact keeps per-body nodal fields sized for the scene's bodies, and a
+  // coupler's loads act on the summed field only: both would be wrong.
+  if (contact_)
+    throw Error(std::string("mpm: ") + what +
+                " from a coupler in a zone with contact between bodies is not supported yet; "
+                "remove solver.mpm.contact from the MPM zone's scene");
+}
+
 std::uint16_t MpmSolver::injected_body(std::size_t material) {
   for (std::size_t b = scene_bodies_; b < bodies_.size(); ++b)
     if (bodies_[b].material == material) return static_cast<std::uint16_t>(b);
@@ -39,10 +49,14 @@ std::uint16_t MpmSolver::injected_body(std::size_t material) {
   body.characteristic_length = min_spacing_ / per_axis;
   body.burn_rate = 0.0;  // inert: lighting time -inf, F = 1
   bodies_.push_back(body);
+  // Every per-body array grows with bodies_ (the passes index them by body).
+  body_fixed_.push_back(0);
+  body_shear_modulus_.push_back(shear_modulus(materials_[material].strength));
   return static_cast<std::uint16_t>(bodies_.size() - 1);
 }
 
 void MpmSolver::inject_particles(const ParticleBatch& batch) {
+  refuse_coupling_with_contact("particle injection");
   const std::size_t n = batch.size();
   const bool with_stress = !batch.stress.empty();
   const auto& g = grid();
@@ -144,6 +158,7 @@ NodeState MpmSolver::node_state(const grid::Index3& node) const {
 }
 
 void MpmSolver::queue_node_load(const NodeLoad& load) {
+  refuse_coupling_with_contact("a node load");
   const auto& g = grid();
   for (int a = 0; a < 3; ++a) {
     const int last = g.is_active(a) ? g.cells()[a] : 0;
@@ -156,10 +171,14 @@ void MpmSolver::queue_node_load(const NodeLoad& load) {
 }
 
 void MpmSolver::apply_node_loads() {
+  // node -> entry of added_node_state_ (-1: none), so n loads cost O(n), not O(n^2).
+  if (added_slot_.size() < grid_.node_count()) added_slot_.resize(grid_.node_count(), -1);
   const auto added = [this](std::size_t n) -> AddedNodeState& {
-    for (auto& entry : added_node_state_)
-      if (entry.node == n) return entry;
-    return added_node_state_.emplace_back(AddedNodeState{n, 0.0, {0.0, 0.0, 0.0}});
+    if (added_slot_[n] < 0) {
+      added_slot_[n] = static_cast<std::int32_t>(added_node_state_.size());
+      added_node_state_.push_back(AddedNodeState{n, 0.0, {0.0, 0.0, 0.0}});
+    }
+    return added_node_state_[static_cast<std::size_t>(added_slot_[n])];
   };
   for (const NodeLoad& load : node_loads_) {
     const auto n = static_cast<std::size_t>(grid_.node(load.node[0] + grid_.offset()[0],
@@ -177,6 +196,7 @@ void MpmSolver::apply_node_loads() {
     for (int a = 0; a < 3; ++a)
       field[a][n] = load.overwrite ? load.value[a] : field[a][n] + load.value[a];
   }
+  for (const auto& entry : added_node_state_) added_slot_[entry.node] = -1;
   node_loads_.clear();
 }
 
@@ -201,6 +221,8 @@ void MpmSolver::restore(ParticleSet particles, std::span<const std::size_t> inje
                 " history values each; this scene's models keep " +
                 std::to_string(particles_.history_stride));
   bodies_.resize(scene_bodies_);
+  body_fixed_.resize(scene_bodies_);
+  body_shear_modulus_.resize(scene_bodies_);
   for (const std::size_t m : injected_body_materials) injected_body(m);  // one per material
   particles_ = std::move(particles);
   home_slot_.reserve(particles_.size());

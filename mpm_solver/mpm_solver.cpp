@@ -15,6 +15,7 @@
 #include "common/initial/initial_cells.hpp"
 #include "mpm_solver/contact/multi_velocity_contact.hpp"
 #include "mpm_solver/damping/shear_mode_damping.hpp"
+#include "mpm_solver/material/shear_modulus.hpp"
 #include "mpm_solver/program_burn.hpp"
 
 namespace mpfd::mpm {
@@ -58,12 +59,6 @@ void dispatch_kernel(bool gimp, int mask, bool contact, Fn&& fn) {
 
 /// A fixed body's mass in the contact kernel: it takes any impulse without moving.
 constexpr double kFixedMassFactor = 1e12;
-
-double shear_modulus(const config::AnyStrength& strength) {
-  if (const auto* e = std::get_if<config::ElasticStrength>(&strength)) return e->shear_modulus;
-  if (const auto* j = std::get_if<config::JohnsonCook>(&strength)) return j->shear_modulus;
-  return 0.0;
-}
 
 }  // namespace
 

@@ -188,6 +188,8 @@ class MpmSolver {
   ConstitutiveModel& model_for(std::size_t material);
   /// The body injected particles of `material` join, made on first use.
   std::uint16_t injected_body(std::size_t material);
+  /// Throws mpfd::Error naming `what` when the zone has contact (not supported with a coupler).
+  void refuse_coupling_with_contact(const char* what) const;
   void apply_node_loads();
   template <class Fn>
   void for_each_face_node(const Fn& fn) const;
@@ -213,8 +215,9 @@ class MpmSolver {
     std::array<double, 3> momentum;
   };
   std::vector<AddedNodeState> added_node_state_;
-  std::vector<std::int32_t> home_slot_;  // scratch, per particle
-  std::vector<std::uint8_t> leaving_;    // scratch, per particle
+  std::vector<std::int32_t> added_slot_;  // per node: its entry in added_node_state_, or -1
+  std::vector<std::int32_t> home_slot_;   // scratch, per particle
+  std::vector<std::uint8_t> leaving_;     // scratch, per particle
   double stable_dt_ = 0.0;
   double time_ = 0.0;
   std::int64_t steps_ = 0;

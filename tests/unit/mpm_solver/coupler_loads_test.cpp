@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "common/config/scene_loader.hpp"
+#include "common/core/error.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 
 namespace mpfd::mpm {
@@ -48,6 +50,72 @@ TEST(CouplerLoads, Uniform_inflow_through_an_interface_node_keeps_the_density) {
   // Measured 3.2e-3 with the loads in the remap; 0.18 without (the first particles
   // expanded). 8 steps: no particle leaves the face cell yet (no injection here).
   EXPECT_LT(worst, 1e-2);
+}
+
+config::Scene gas_zone(const std::string& extra_solver, const std::string& faces) {
+  return config::parse_scene(
+      "name: zone\ntime: {end: 1.0, cfl: 0.2}\n"
+      "domain: {lower: [0, 0, 0], upper: [1, 0.5, 0.05], cells: [20, 10, 1]}\n"
+      "materials:\n  gas: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+      "initial: {material: gas, density: 1.0, pressure: 1.0e5}\n"
+      "bodies:\n  - {name: a, material: gas, density: 1.0, pressure: 1.0e5,\n"
+      "     shape: {box: {lower: [0.5, 0, 0], upper: [0.75, 0.5, 0.05]}}}\n"
+      "  - {name: b, material: gas, density: 1.0, pressure: 1.0e5,\n"
+      "     shape: {box: {lower: [0.75, 0, 0], upper: [1, 0.5, 0.05]}}}\n"
+      "boundaries: " +
+          faces + "\noutput: {interval: 1.0}\nsolver: {method: mpm, mpm: {" + extra_solver + "}}\n",
+      "zone.yaml");
+}
+
+ParticleBatch one_cell_of_gas(double x) {
+  ParticleBatch batch;
+  batch.resize(4);
+  batch.stress.clear();
+  for (std::size_t i = 0; i < 4; ++i) {
+    batch.id[i] = i;
+    batch.position[3 * i + 0] = x + 0.0125 * static_cast<double>(1 + 2 * (i % 2));
+    batch.position[3 * i + 1] = 0.0125 * static_cast<double>(1 + 2 * (i / 2));
+    batch.position[3 * i + 2] = 0.025;
+    batch.velocity[3 * i + 0] = 1.0;
+    batch.mass[i] = 0.025 * 0.025 * 0.05;
+    batch.volume[i] = 0.025 * 0.025 * 0.05;
+    batch.internal_energy[i] = batch.mass[i] * 1.0e5 / 0.4;  // p / ((gamma - 1) rho)
+    batch.material[i] = 0;
+  }
+  return batch;
+}
+
+// Contact keeps per-body nodal fields for the scene's bodies; a coupler's
+// particles and loads would bypass them, so a contact zone refuses both by name.
+TEST(CouplerLoads, A_zone_with_contact_refuses_injection_and_node_loads_by_name) {
+  const auto scene = gas_zone("contact: {friction: 0.1}", "{}");
+  MpmSolver solver(scene, MpmSettings::from_scene(scene));
+  try {
+    solver.inject_particles(one_cell_of_gas(0.45));
+    FAIL() << "injection into a contact zone was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("particle injection"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("solver.mpm.contact"), std::string::npos) << e.what();
+  }
+  NodeLoad load;
+  load.node = {10, 2, 0};
+  EXPECT_THROW(solver.queue_node_load(load), Error);
+}
+
+// Injected particles form new bodies: every per-body array (fixed flags, shear
+// moduli for the non-reflecting face) must grow with them, so a zone with a
+// non-reflecting face steps on with injected gas in it.
+TEST(CouplerLoads, Injected_particles_step_in_a_zone_with_non_reflecting_faces) {
+  const auto scene =
+      gas_zone("", "{x_lower: non_reflecting, y_lower: symmetry, y_upper: symmetry}");
+  MpmSolver solver(scene, MpmSettings::from_scene(scene));
+  const double before = solver.totals().mass;
+  solver.inject_particles(one_cell_of_gas(0.45));
+  EXPECT_NEAR(solver.totals().mass, before + 4 * 0.025 * 0.025 * 0.05, 1e-15);
+  for (int i = 0; i < 5; ++i) solver.advance(solver.stable_dt());
+  EXPECT_EQ(solver.bodies().size(), 3u);  // a, b and the injected gas
+  const auto& ps = solver.particles();
+  for (std::size_t p = 0; p < ps.size(); ++p) ASSERT_TRUE(std::isfinite(ps.velocity[0][p]));
 }
 
 }  // namespace
