@@ -177,7 +177,19 @@ void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::In
         // Pass 1, positions only: the particles whose stencil (as rebuild_grid
         // places it) reaches the box, and the colour of their home block.
         std::array<std::int32_t, SparseGrid::kColours + 1> begin{};
+        // A stencil starts at most kWidth nodes below its particle: farther ones
+        // cannot reach the box, and this test needs no floor (a libm call).
+        double near_lo[3], near_hi[3];
+        for (int a = 0; a < 3; ++a) {
+          near_lo[a] = geometry_.origin[a] + (lo[a] - kWidth - 1) / geometry_.inverse_spacing[a];
+          near_hi[a] = geometry_.origin[a] + (hi[a] + 1) / geometry_.inverse_spacing[a];
+        }
         for (std::size_t p = 0; p < ps.size(); ++p) {
+          bool near = true;
+          for (int a = 0; a < 3; ++a)
+            if ((kMask >> a) & 1)
+              near = near && ps.position[a][p] > near_lo[a] && ps.position[a][p] < near_hi[a];
+          if (!near) continue;
           bool reaches = true;
           int colour = 0;
           for (int a = 0; a < 3 && reaches; ++a) {
