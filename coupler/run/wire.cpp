@@ -11,6 +11,36 @@ v1::Exchange& exchange_of(cosim::Message& message) {
   return *message.header.mutable_exchange();
 }
 
+namespace {
+
+/// Empties the body of an operation and keeps it (Operation::Clear() would delete it).
+void clear_body(v1::Operation& operation) {
+  switch (operation.op_case()) {
+    case v1::Operation::kApply:
+      operation.mutable_apply()->Clear();
+      break;
+    case v1::Operation::kExportRegion:
+      operation.mutable_export_region()->Clear();
+      break;
+    case v1::Operation::kInject:
+      operation.mutable_inject()->Clear();
+      break;
+    case v1::Operation::kRemove:
+      operation.mutable_remove()->Clear();
+      break;
+    case v1::Operation::kAdvance:
+      operation.mutable_advance()->Clear();
+      break;
+    case v1::Operation::kProposeDt:
+      operation.mutable_propose_dt()->Clear();
+      break;
+    default:  // a kind the add_* below do not make: not kept
+      operation.Clear();
+  }
+}
+
+}  // namespace
+
 void clear_for_reuse(cosim::Message& message) {
   message.frames.clear();
   message.header.mutable_arrays()->Clear();  // keeps the descriptors and their strings for reuse
@@ -31,19 +61,32 @@ void clear_for_reuse(cosim::Message& message) {
     parked[static_cast<std::size_t>(i)] = operations.ReleaseCleared();
   for (int i = 0; i < live + spare; ++i) {
     v1::Operation& operation = *parked[static_cast<std::size_t>(i)];
-    static const auto* const kBody = v1::Operation::descriptor()->FindOneofByName("op");
-    const auto* reflection = operation.GetReflection();
-    const auto* body = reflection->GetOneofFieldDescriptor(operation, kBody);
-    if (body != nullptr && body->cpp_type() == google::protobuf::FieldDescriptor::CPPTYPE_MESSAGE)
-      reflection->MutableMessage(&operation, body)->Clear();
-    else
-      operation.Clear();
+    clear_body(operation);
     operations.AddCleared(&operation);
   }
 }
 
+namespace {
+
+/// The next operation of an Exchange: a parked one of `kind` if there is one
+/// (its body kept, see clear_for_reuse), else a new one.
+v1::Operation& next_operation(cosim::Message& message, v1::Operation::OpCase kind) {
+  auto& operations = *exchange_of(message).mutable_operations();
+  for (int spares = operations.ClearedCount(); spares > 0; --spares) {
+    v1::Operation* next = operations.Add();
+    if (next->op_case() == kind) return *next;
+    operations.ExtractSubrange(operations.size() - 1, 1, &next);  // to the back of the spares
+    operations.AddCleared(next);
+  }
+  // None of this kind is parked: a new one, so that the spares keep their bodies.
+  operations.AddAllocated(google::protobuf::Arena::CreateMessage<v1::Operation>(nullptr));
+  return *operations.Mutable(operations.size() - 1);
+}
+
+}  // namespace
+
 void add_apply(cosim::Message& message, std::string_view region, v1::ApplyRegion::Mode mode) {
-  auto& apply = *exchange_of(message).add_operations()->mutable_apply();
+  auto& apply = *next_operation(message, v1::Operation::kApply).mutable_apply();
   apply.Clear();
   apply.set_region(region.data(), region.size());
   apply.set_mode(mode);
@@ -51,31 +94,31 @@ void add_apply(cosim::Message& message, std::string_view region, v1::ApplyRegion
 
 void add_export(cosim::Message& message, std::string_view region,
                 std::initializer_list<const char*> quantities) {
-  auto& op = *exchange_of(message).add_operations()->mutable_export_region();
+  auto& op = *next_operation(message, v1::Operation::kExportRegion).mutable_export_region();
   op.Clear();
   op.set_region(region.data(), region.size());
   for (const char* q : quantities) op.add_quantities(q);
 }
 
 void add_advance(cosim::Message& message, double dt, double time) {
-  auto& op = *exchange_of(message).add_operations()->mutable_advance();
+  auto& op = *next_operation(message, v1::Operation::kAdvance).mutable_advance();
   op.Clear();
   op.set_dt(dt);
   op.set_time(time);
 }
 
 void add_propose_dt(cosim::Message& message) {
-  exchange_of(message).add_operations()->mutable_propose_dt();
+  next_operation(message, v1::Operation::kProposeDt).mutable_propose_dt();
 }
 
 void add_inject(cosim::Message& message, std::string_view group) {
-  auto& op = *exchange_of(message).add_operations()->mutable_inject();
+  auto& op = *next_operation(message, v1::Operation::kInject).mutable_inject();
   op.Clear();
   op.set_group(group.data(), group.size());
 }
 
 void add_remove(cosim::Message& message, std::string_view group, std::string_view left_region) {
-  auto& op = *exchange_of(message).add_operations()->mutable_remove();
+  auto& op = *next_operation(message, v1::Operation::kRemove).mutable_remove();
   op.Clear();
   op.set_group(group.data(), group.size());
   op.set_left_region(left_region.data(), left_region.size());
