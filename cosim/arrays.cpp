@@ -24,7 +24,7 @@ std::size_t dtype_size(v1::DType dtype) {
   }
 }
 
-ArrayShape::ArrayShape(std::initializer_list<std::uint64_t> extents) : axes_(extents.size()) {
+ArrayShape::ArrayShape(std::span<const std::uint64_t> extents) : axes_(extents.size()) {
   if (axes_ > kMaxAxes)
     throw Error("array shape of " + std::to_string(axes_) + " axes; at most " +
                 std::to_string(kMaxAxes) + " are supported");

@@ -54,7 +54,12 @@ class ArrayShape {
  public:
   static constexpr std::size_t kMaxAxes = 4;
   ArrayShape() = default;
-  ArrayShape(std::initializer_list<std::uint64_t> extents);  // throws mpfd::Error past kMaxAxes
+  ArrayShape(std::initializer_list<std::uint64_t> extents)  // throws mpfd::Error past kMaxAxes
+      : ArrayShape(std::span<const std::uint64_t>(extents.begin(), extents.size())) {}
+  /// From extents held elsewhere (a std::vector, a descriptor's shape); throws past kMaxAxes.
+  ArrayShape(std::span<const std::uint64_t> extents);
+  ArrayShape(const std::vector<std::uint64_t>& extents)
+      : ArrayShape(std::span<const std::uint64_t>(extents)) {}
   [[nodiscard]] bool empty() const { return axes_ == 0; }
   [[nodiscard]] const std::uint64_t* begin() const { return extents_.data(); }
   [[nodiscard]] const std::uint64_t* end() const { return extents_.data() + axes_; }
