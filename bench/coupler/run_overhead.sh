@@ -4,7 +4,7 @@
 # 200 x 100 cells, 48 000 particles), solvers as threads (inproc) and as child
 # processes (ipc), one OpenMP thread per solver. Reads summary.json's "timing":
 #   share = 1 - sum(slower solver's Advance wall) / sum(step wall).
-# Runs alternate (build x case x transport, `repeats` rounds) so that the
+# Runs alternate (case x transport x build, `repeats` rounds) so that the
 # machine's load hits all alike; the table prints the median of each. With a
 # second build folder (e.g. one of the previous commit) both are measured.
 # Usage: bench/coupler/run_overhead.sh [build-dir] [out.csv] [repeats] [baseline-build-dir]
@@ -22,11 +22,11 @@ declare -A scenes=([sod_1d]="${root}/configs/cfdmp_sod_1d.yaml"
                    [cfdmp_2d]="${here}/cfdmp_2d_overhead.yaml")
 echo "build,case,transport,round,steps,step_wall_s,advance_wall_s,share" >"${out}"
 for round in $(seq 1 "${repeats}"); do
-  for b in "${!builds[@]}"; do
-    build=${builds[$b]}
-    label=$([[ $b == 0 ]] && echo this || echo baseline)
-    for case in sod_1d cfdmp_2d; do
-      for transport in inproc ipc; do
+  for case in sod_1d cfdmp_2d; do
+    for transport in inproc ipc; do
+      for b in "${!builds[@]}"; do
+        build=${builds[$b]}
+        label=$([[ $b == 0 ]] && echo this || echo baseline)
         flags=()
         [[ ${transport} == ipc ]] && flags=(--processes
           --fdm-program "${build}/fdm_solver/fdm_solver" --mpm-program "${build}/mpm_solver/mpm_solver")
