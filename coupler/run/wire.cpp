@@ -34,7 +34,10 @@ void clear_body(v1::Operation& operation) {
     case v1::Operation::kProposeDt:
       operation.mutable_propose_dt()->Clear();
       break;
-    default:  // a kind the add_* below do not make: not kept
+    case v1::Operation::kSample:
+      operation.mutable_sample()->Clear();
+      break;
+    default:  // none, or a kind newer than this code: not kept
       operation.Clear();
   }
 }
@@ -46,7 +49,7 @@ void clear_for_reuse(cosim::Message& message) {
   message.header.mutable_arrays()->Clear();  // keeps the descriptors and their strings for reuse
   // Clear() would delete each operation's body (a oneof, owned by pointer). So
   // the bodies are cleared in place and the operations parked in order (the
-  // spares of a longer step after them): add_operations() hands them back, and
+  // spares of a longer step after them): next_operation() hands them back, and
   // mutable_<kind>() reuses the body when the kind is the same.
   auto& operations = *exchange_of(message).mutable_operations();
   const int live = operations.size();
@@ -66,10 +69,6 @@ void clear_for_reuse(cosim::Message& message) {
   }
 }
 
-namespace {
-
-/// The next operation of an Exchange: a parked one of `kind` if there is one
-/// (its body kept, see clear_for_reuse), else a new one.
 v1::Operation& next_operation(cosim::Message& message, v1::Operation::OpCase kind) {
   auto& operations = *exchange_of(message).mutable_operations();
   for (int spares = operations.ClearedCount(); spares > 0; --spares) {
@@ -82,8 +81,6 @@ v1::Operation& next_operation(cosim::Message& message, v1::Operation::OpCase kin
   operations.AddAllocated(google::protobuf::Arena::CreateMessage<v1::Operation>(nullptr));
   return *operations.Mutable(operations.size() - 1);
 }
-
-}  // namespace
 
 void add_apply(cosim::Message& message, std::string_view region, v1::ApplyRegion::Mode mode) {
   auto& apply = *next_operation(message, v1::Operation::kApply).mutable_apply();

@@ -22,6 +22,9 @@ v1::Exchange& exchange_of(cosim::Message& message);
 /// (descriptors, operations and their bodies, strings): once a step of the same
 /// kinds of operations has been built, building it again allocates nothing.
 void clear_for_reuse(cosim::Message& message);
+/// The next operation of an Exchange, for the add_* below and any new kind: a
+/// parked one of `kind` if there is one (its body kept and emptied), else a new one.
+v1::Operation& next_operation(cosim::Message& message, v1::Operation::OpCase kind);
 void add_apply(cosim::Message& message, std::string_view region, v1::ApplyRegion::Mode mode);
 void add_export(cosim::Message& message, std::string_view region,
                 std::initializer_list<const char*> quantities = {});
