@@ -1,5 +1,6 @@
 #include "cosim/arrays.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "common/core/error.hpp"
@@ -21,6 +22,13 @@ std::size_t dtype_size(v1::DType dtype) {
     default:
       return 0;
   }
+}
+
+ArrayShape::ArrayShape(std::span<const std::uint64_t> extents) : axes_(extents.size()) {
+  if (axes_ > kMaxAxes)
+    throw Error("array shape of " + std::to_string(axes_) + " axes; at most " +
+                std::to_string(kMaxAxes) + " are supported");
+  std::copy(extents.begin(), extents.end(), extents_.begin());
 }
 
 void append_frame(Message& message, const ArraySpec& spec, v1::DType dtype, std::size_t count,

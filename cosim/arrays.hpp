@@ -2,8 +2,10 @@
 // Typed access to the raw frames of a Message: append arrays (copying or
 // zero-copy) and view received arrays as spans (copied only when misaligned).
 
+#include <array>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -46,10 +48,31 @@ struct DTypeOf<std::uint8_t> {
 /// Bytes per value of a dtype; 0 for DTYPE_UNSPECIFIED or an unknown value.
 std::size_t dtype_size(v1::DType dtype);
 
+/// The extents of an array, up to four axes, from a braced list ({n, 3}) without
+/// allocating (a coupler builds several arrays every step).
+class ArrayShape {
+ public:
+  static constexpr std::size_t kMaxAxes = 4;
+  ArrayShape() = default;
+  ArrayShape(std::initializer_list<std::uint64_t> extents)  // throws mpfd::Error past kMaxAxes
+      : ArrayShape(std::span<const std::uint64_t>(extents.begin(), extents.size())) {}
+  /// From extents held elsewhere (a std::vector, a descriptor's shape); throws past kMaxAxes.
+  ArrayShape(std::span<const std::uint64_t> extents);
+  ArrayShape(const std::vector<std::uint64_t>& extents)
+      : ArrayShape(std::span<const std::uint64_t>(extents)) {}
+  [[nodiscard]] bool empty() const { return axes_ == 0; }
+  [[nodiscard]] const std::uint64_t* begin() const { return extents_.data(); }
+  [[nodiscard]] const std::uint64_t* end() const { return extents_.data() + axes_; }
+
+ private:
+  std::array<std::uint64_t, kMaxAxes> extents_{};
+  std::size_t axes_ = 0;
+};
+
 struct ArraySpec {
   std::string_view group;
   std::string_view name;
-  std::vector<std::uint64_t> shape;  // empty: one axis of the data's length
+  ArrayShape shape;  // empty: one axis of the data's length
   std::string_view units;
 };
 

@@ -24,15 +24,21 @@ void check_version(const v1::Header& header) {
   }
 }
 
-std::uint64_t expected_bytes(const v1::ArrayDescriptor& array, const std::string& where) {
+/// "array 'group/name' from 'sender'", for errors (built only when one is thrown).
+std::string where(const v1::Header& header, const v1::ArrayDescriptor& array) {
+  return "array '" + array.group() + "/" + array.name() + "' from " + who(header);
+}
+
+std::uint64_t expected_bytes(const v1::Header& header, const v1::ArrayDescriptor& array) {
   const std::size_t size = dtype_size(array.dtype());
   if (size == 0) {
-    throw Error(where + " has unknown dtype " + std::to_string(static_cast<int>(array.dtype())));
+    throw Error(where(header, array) + " has unknown dtype " +
+                std::to_string(static_cast<int>(array.dtype())));
   }
   std::uint64_t bytes = size;
   for (const auto extent : array.shape()) {
     if (extent != 0 && bytes > std::numeric_limits<std::uint64_t>::max() / extent) {
-      throw Error(where + " has a shape whose byte size overflows 64 bits");
+      throw Error(where(header, array) + " has a shape whose byte size overflows 64 bits");
     }
     bytes *= extent;
   }
@@ -55,19 +61,17 @@ void validate(const Message& message) {
   }
   std::vector<bool> seen(frames, false);
   for (const auto& array : header.arrays()) {
-    const std::string where =
-        "array '" + array.group() + "/" + array.name() + "' from " + who(header);
     if (array.frame_index() >= frames || seen[array.frame_index()]) {
-      throw Error(where + " names frame " + std::to_string(array.frame_index()) +
+      throw Error(where(header, array) + " names frame " + std::to_string(array.frame_index()) +
                   ", which is out of range or already described");
     }
     seen[array.frame_index()] = true;
-    const auto bytes = expected_bytes(array, where);
+    const auto bytes = expected_bytes(header, array);
     const auto actual = message.frames[array.frame_index()].size();
     if (bytes != actual) {
-      throw Error(where + " should have " + std::to_string(bytes) + " bytes (shape x " +
-                  std::to_string(dtype_size(array.dtype())) + "-byte values) but its frame has " +
-                  std::to_string(actual));
+      throw Error(where(header, array) + " should have " + std::to_string(bytes) +
+                  " bytes (shape x " + std::to_string(dtype_size(array.dtype())) +
+                  "-byte values) but its frame has " + std::to_string(actual));
     }
   }
 }

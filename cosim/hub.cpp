@@ -52,6 +52,10 @@ void Hub::set_clock(std::uint64_t step, double time) {
 }
 
 std::uint64_t Hub::send(std::string_view peer, Message&& message) {
+  return send_keeping_header(peer, message);
+}
+
+std::uint64_t Hub::send_keeping_header(std::string_view peer, Message& message) {
   auto& envelope = *message.header.mutable_envelope();
   envelope.set_protocol_major(protocol_major);
   envelope.set_protocol_minor(protocol_minor);
@@ -64,7 +68,7 @@ std::uint64_t Hub::send(std::string_view peer, Message&& message) {
   const std::uint64_t sequence = ++sequence_slot->second;
   envelope.set_sequence(sequence);
 
-  std::vector<zmq::message_t> parts = encode(std::move(message));
+  std::vector<zmq::message_t> parts = encode(std::move(message));  // moves the frames only
   if (recorder_ != nullptr) recorder_->record(v1::DIRECTION_SENT, peer, parts);
   try {
     if (!socket_.send(zmq::buffer(peer.data(), peer.size()), zmq::send_flags::sndmore)) {

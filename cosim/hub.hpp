@@ -44,6 +44,9 @@ class Hub {
   /// Fills the envelope (version, run id, step, sequence, sender "coupler") and
   /// sends. Returns the sequence number. Throws if the peer is not connected.
   std::uint64_t send(std::string_view peer, Message&& message);
+  /// As send(), but only the frames go: `message.header` stays with the caller,
+  /// so that a request built every step keeps its memory (no allocation).
+  std::uint64_t send_keeping_header(std::string_view peer, Message& message);
 
   /// The next message from `peer`, waiting at most reply_timeout. A reply with
   /// an Error body is thrown as mpfd::Error naming the peer.

@@ -1,6 +1,7 @@
 // The MpmSolver members a coupler uses (mpm_solver.hpp, "Coupling"):
 // particle injection and removal, nodal state and contributions, restore.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -155,6 +156,100 @@ NodeState MpmSolver::node_state(const grid::Index3& node) const {
   if (n < 0) return {};
   const auto i = static_cast<std::size_t>(n);
   return {grid_.mass[i], {grid_.momentum[0][i], grid_.momentum[1][i], grid_.momentum[2][i]}};
+}
+
+void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::Index3& hi,
+                                          NodeBoxMap& out) const {
+  const std::size_t nodes = static_cast<std::size_t>(hi[0] - lo[0]) *
+                            static_cast<std::size_t>(hi[1] - lo[1]) *
+                            static_cast<std::size_t>(hi[2] - lo[2]);
+  out.mass.assign(nodes, 0.0);
+  out.momentum.assign(3 * nodes, 0.0);
+  out.reaching.clear();
+  const auto& ps = particles_;
+  dispatch_stencil(
+      settings_.shape_function != config::ShapeFunction::linear, axis_mask_,
+      [&](auto width, auto mask) {
+        constexpr int kWidth = decltype(width)::value;
+        constexpr int kMask = decltype(mask)::value;
+        constexpr int kExtent[3] = {(kMask & 1) ? kWidth : 1, (kMask & 2) ? kWidth : 1,
+                                    (kMask & 4) ? kWidth : 1};
+        // Pass 1, positions only: the particles whose stencil (as rebuild_grid
+        // places it) reaches the box, and the colour of their home block.
+        std::array<std::int32_t, SparseGrid::kColours + 1> begin{};
+        // A stencil starts at most kWidth nodes below its particle: farther ones
+        // cannot reach the box, and this test needs no floor (a libm call).
+        double near_lo[3], near_hi[3];
+        for (int a = 0; a < 3; ++a) {
+          near_lo[a] = geometry_.origin[a] + (lo[a] - kWidth - 1) / geometry_.inverse_spacing[a];
+          near_hi[a] = geometry_.origin[a] + (hi[a] + 1) / geometry_.inverse_spacing[a];
+        }
+        for (std::size_t p = 0; p < ps.size(); ++p) {
+          bool near = true;
+          for (int a = 0; a < 3; ++a)
+            if ((kMask >> a) & 1)
+              near = near && ps.position[a][p] > near_lo[a] && ps.position[a][p] < near_hi[a];
+          if (!near) continue;
+          bool reaches = true;
+          int colour = 0;
+          for (int a = 0; a < 3 && reaches; ++a) {
+            const bool active = ((kMask >> a) & 1) != 0;
+            const int first =
+                first_node<kWidth>(ps.position[a][p], a, active, geometry_) - grid_.offset()[a];
+            reaches = first + kExtent[a] > lo[a] && first < hi[a];
+            if (active) colour |= ((first + grid_.offset()[a]) >> SparseGrid::kBlockShift & 1) << a;
+          }
+          if (!reaches) continue;
+          out.reaching.push_back(static_cast<std::int32_t>(p));
+          ++begin[static_cast<std::size_t>(colour) + 1];
+        }
+        // P2G adds to a node colour by colour, and within a colour from one home
+        // block, whose particles it takes in index order: the same order here
+        // gives the same sums to the last bit.
+        for (int c = 0; c < SparseGrid::kColours; ++c) begin[c + 1] += begin[c];
+        out.by_colour.resize(out.reaching.size());
+        for (const std::int32_t p : out.reaching) {
+          int colour = 0;
+          for (int a = 0; a < 3; ++a)
+            if ((kMask >> a) & 1)
+              colour |= (first_node<kWidth>(ps.position[a][static_cast<std::size_t>(p)], a, true,
+                                            geometry_) >>
+                             SparseGrid::kBlockShift &
+                         1)
+                        << a;
+          out.by_colour[static_cast<std::size_t>(begin[static_cast<std::size_t>(colour)]++)] = p;
+        }
+        // Pass 2: (2-12) and (2-9) on the box's nodes, as particles_to_grid computes them.
+        for (const std::int32_t index : out.by_colour) {
+          const auto p = static_cast<std::size_t>(index);
+          double half_width[3];
+          particle_half_width(p, half_width);
+          AxisWeights<kWidth> ax[3];
+          for (int a = 0; a < 3; ++a)
+            axis_weights<kWidth>(ps.position[a][p], a, ((kMask >> a) & 1) != 0, geometry_,
+                                 half_width[a], ax[a]);
+          const double m = ps.mass[p];
+          const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
+          for (int k = 0; k < kExtent[2]; ++k) {
+            const int nk = ax[2].first + k - lo[2];
+            if (nk < 0 || nk >= hi[2] - lo[2]) continue;
+            for (int j = 0; j < kExtent[1]; ++j) {
+              const int nj = ax[1].first + j - lo[1];
+              if (nj < 0 || nj >= hi[1] - lo[1]) continue;
+              const double wyz = ax[1].weight[j] * ax[2].weight[k];
+              for (int i = 0; i < kExtent[0]; ++i) {
+                const int ni = ax[0].first + i - lo[0];
+                if (ni < 0 || ni >= hi[0] - lo[0]) continue;
+                const auto n =
+                    static_cast<std::size_t>((ni * (hi[1] - lo[1]) + nj) * (hi[2] - lo[2]) + nk);
+                const double wm = ax[0].weight[i] * wyz * m;
+                out.mass[n] += wm;
+                for (int a = 0; a < 3; ++a) out.momentum[3 * n + a] += wm * v[a];
+              }
+            }
+          }
+        }
+      });
 }
 
 void MpmSolver::queue_node_load(const NodeLoad& load) {

@@ -98,6 +98,16 @@ struct NodeState {
   std::array<double, 3> momentum{};  ///< p_I (2-9) [kg m/s]
 };
 
+/// Node mass and momentum of a box of grid nodes (MpmSolver::map_particles_to_node_box).
+/// Kept by the caller between calls: after the first, filling it allocates nothing.
+struct NodeBoxMap {
+  std::vector<double> mass;      ///< m_I (2-12) per node [kg]
+  std::vector<double> momentum;  ///< p_I (2-9), 3 per node [kg m/s]
+  /// The particles whose stencil reaches the box, in index order.
+  std::vector<std::int32_t> reaching;
+  std::vector<std::int32_t> by_colour;  ///< scratch: `reaching` in summation order
+};
+
 class MpmSolver {
  public:
   /// Particles from the scene's bodies and charges (particle_generation.hpp),
@@ -149,6 +159,12 @@ class MpmSolver {
   /// A grid node's mass and momentum after map_particles_to_nodes (zero
   /// where no particle's stencil reaches). `node`: grid node indices.
   [[nodiscard]] NodeState node_state(const grid::Index3& node) const;
+  /// map_particles_to_nodes then node_state over the grid-node box [lo, hi),
+  /// bit for bit, mapping only the particles whose stencil reaches the box, in
+  /// the scatter's summation order (home-block colour, then particle index).
+  /// Fills `out` (C order over the box, k fastest) and leaves the grid as it was.
+  void map_particles_to_node_box(const grid::Index3& lo, const grid::Index3& hi,
+                                 NodeBoxMap& out) const;
   /// Queues a contribution for the next advance, applied in queue order
   /// after (2-12) and before (2-13) (see the step order above).
   void queue_node_load(const NodeLoad& load);

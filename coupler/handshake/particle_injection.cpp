@@ -11,9 +11,9 @@ namespace mpfd::coupler::handshake {
 
 void InjectionRule::check() const {
   require(reference_mass > 0, "particle injection", "reference_mass", reference_mass, "> 0");
-  require(min_particle_mass > 0 && min_particle_mass <= reference_mass, "particle injection",
-          "min_particle_mass", min_particle_mass,
-          "in (0, reference_mass = " + shortest_text(reference_mass) + "]");
+  if (!(min_particle_mass > 0 && min_particle_mass <= reference_mass))  // text only on failure
+    require(false, "particle injection", "min_particle_mass", min_particle_mass,
+            "in (0, reference_mass = " + shortest_text(reference_mass) + "]");
 }
 
 std::size_t particle_count(double mass, const InjectionRule& rule) {

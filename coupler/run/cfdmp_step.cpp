@@ -136,15 +136,22 @@ template <int Dim>
 void CfdmpStep<Dim>::add_deposit(cosim::Message& fdm) {
   // T (4-19) ... (4-21): the particles removed in the last step and the returned parcels.
   const std::size_t n = deposit_box_.count();
-  std::vector<double> rho(n, 0.0), energy(n, 0.0);
-  std::vector<Vec> momentum(n, Vec::Zero());
+  auto& rho = scratch_.rho;
+  auto& energy = scratch_.energy;
+  auto& momentum = scratch_.momentum;
+  rho.assign(n, 0.0);
+  energy.assign(n, 0.0);
+  momentum.assign(n, Vec::Zero());
   const handshake::CellOutputs<Dim> add{rho, momentum, energy};
   const std::size_t removed = removed_mass_.size();
   if (removed > 0) {
-    std::vector<std::size_t> cell(removed);
+    auto& cell = scratch_.index;
+    auto& p = scratch_.velocity;  // the particles' momenta
+    auto& e = scratch_.mass;      // and total energies
+    cell.resize(removed);
     handshake::locate_deposit_cells<Dim>(removed_position_, deposit_box_, geometry_, cell);
-    std::vector<Vec> p(removed);
-    std::vector<double> e(removed);
+    p.resize(removed);
+    e.resize(removed);
     handshake::particle_amounts<Dim>(removed_mass_, removed_velocity_, removed_energy_, p, e);
     handshake::deposit<Dim>(removed_mass_, p, e, cell, geometry_.cell_volume, add);
     for (const double m : removed_mass_) traffic_.deposited_mass += m;
@@ -159,7 +166,7 @@ void CfdmpStep<Dim>::add_deposit(cosim::Message& fdm) {
   if (traffic_.deposited_mass == 0.0) return;
   cosim::add_array(fdm, {"deposit_cells", "rho", {}, "kg/m^3"}, std::span<const double>(rho));
   cosim::add_array(fdm, {"deposit_cells", "momentum", {n, 3}, "kg/(m^2*s)"},
-                   std::span<const double>(to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0})));
+                   to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
   cosim::add_array(fdm, {"deposit_cells", "E", {}, "J/m^3"}, std::span<const double>(energy));
   add_apply(fdm, "deposit_cells", v1::ApplyRegion::MODE_ADD);
   fdm_ops_.push_back(Op::apply);
@@ -169,13 +176,17 @@ template <int Dim>
 void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm) {
   // T (4-1) ... (4-6) from the ghost_nodes of t^n.
   const std::size_t n = ghost_cells_.count();
-  std::vector<double> rho(n), energy(n);
-  std::vector<Vec> momentum(n);
+  auto& rho = scratch_.rho;
+  auto& energy = scratch_.energy;
+  auto& momentum = scratch_.momentum;
+  rho.resize(n);
+  energy.resize(n);
+  momentum.resize(n);
   handshake::fill_ghost_cells<Dim>({ghost_node_mass_, ghost_node_momentum_, ghost_cell_energy_},
                                    corners_, geometry_.cell_volume, {rho, momentum, energy});
   cosim::add_array(fdm, {"ghost_cells", "rho", {}, "kg/m^3"}, std::span<const double>(rho));
   cosim::add_array(fdm, {"ghost_cells", "momentum", {n, 3}, "kg/(m^2*s)"},
-                   std::span<const double>(to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0})));
+                   to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
   cosim::add_array(fdm, {"ghost_cells", "E", {}, "J/m^3"}, std::span<const double>(energy));
   add_apply(fdm, "ghost_cells", v1::ApplyRegion::MODE_SET);
   fdm_ops_.push_back(Op::apply);
@@ -184,23 +195,34 @@ void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm) {
 template <int Dim>
 void CfdmpStep<Dim>::add_injection(cosim::Message& mpm) {
   // T (4-15) ... (4-18): parcels heavy enough become particles in cell k-w+1.
-  std::vector<std::size_t> count(parcels_.size());
+  auto& count = scratch_.index;
+  count.resize(parcels_.size());
   const std::size_t n = handshake::count_new_particles<Dim>(parcels_, rule_, count);
   if (n == 0) return;
-  std::vector<Vec> position(n), velocity(n);
-  std::vector<double> mass(n), volume(n), energy(n);
-  std::vector<std::size_t> face(n);
+  auto& position = scratch_.position;
+  auto& velocity = scratch_.velocity;
+  auto& mass = scratch_.mass;
+  auto& volume = scratch_.volume;
+  auto& energy = scratch_.energy;
+  auto& face = scratch_.face;
+  auto& ids = scratch_.ids;
+  auto& material = scratch_.material;
+  position.resize(n);
+  velocity.resize(n);
+  mass.resize(n);
+  volume.resize(n);
+  energy.resize(n);
+  face.resize(n);
   handshake::create_particles<Dim>(parcels_, count, strip_layout_, geometry_,
                                    {position, velocity, mass, volume, energy, face});
-  std::vector<std::uint64_t> ids(n);
+  ids.resize(n);
   for (auto& id : ids) id = next_id_++;
-  const std::vector<std::uint32_t> material(n, fluid_material_);
+  material.assign(n, fluid_material_);
   cosim::add_array(mpm, {"injected", "id", {}, "1"}, std::span<const std::uint64_t>(ids));
-  cosim::add_array(
-      mpm, {"injected", "position", {n, 3}, "m"},
-      std::span<const double>(to_wire_vectors<Dim>(position, layout_, inactive_centre_)));
+  cosim::add_array(mpm, {"injected", "position", {n, 3}, "m"},
+                   to_wire_vectors<Dim>(position, layout_, inactive_centre_, scratch_.wire));
   cosim::add_array(mpm, {"injected", "velocity", {n, 3}, "m/s"},
-                   std::span<const double>(to_wire_vectors<Dim>(velocity, layout_, {0, 0, 0})));
+                   to_wire_vectors<Dim>(velocity, layout_, {0, 0, 0}, scratch_.wire));
   cosim::add_array(mpm, {"injected", "mass", {}, "kg"}, std::span<const double>(mass));
   cosim::add_array(mpm, {"injected", "volume", {}, "m^3"}, std::span<const double>(volume));
   cosim::add_array(mpm, {"injected", "internal_energy", {}, "J"}, std::span<const double>(energy));
@@ -216,25 +238,34 @@ template <int Dim>
 void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
   // Second terms of T (4-7) ... (4-9) from the strip_cells of t^n.
   const std::size_t n = stencil_.cells.size();
-  std::vector<double> mass(n);
-  std::vector<Vec> momentum(n), force(n);
+  auto& mass = scratch_.mass;
+  auto& momentum = scratch_.momentum;
+  auto& force = scratch_.force;
+  mass.resize(n);
+  momentum.resize(n);
+  force.resize(n);
   handshake::interface_node_terms<Dim>({strip_now_.rho, strip_now_.momentum, strip_now_.energy},
                                        strip_now_.pressure, strip_layout_, stencil_, geometry_,
                                        {mass, momentum, force});
   cosim::add_array(mpm, {"interface_nodes", "mass", {}, "kg"}, std::span<const double>(mass));
   cosim::add_array(mpm, {"interface_nodes", "momentum", {n, 3}, "kg*m/s"},
-                   std::span<const double>(to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0})));
+                   to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
   cosim::add_array(mpm, {"interface_nodes", "internal_force", {n, 3}, "N"},
-                   std::span<const double>(to_wire_vectors<Dim>(force, layout_, {0, 0, 0})));
+                   to_wire_vectors<Dim>(force, layout_, {0, 0, 0}, scratch_.wire));
   add_apply(mpm, "interface_nodes", v1::ApplyRegion::MODE_ADD);
   mpm_ops_.push_back(Op::apply);
 }
 
 template <int Dim>
 Totals CfdmpStep<Dim>::cell_totals(const cosim::Message& reply, std::size_t count) const {
-  const auto rho = read_doubles(reply, kFdm, "fdm_owned", "rho", count);
-  const auto momentum = read_doubles(reply, kFdm, "fdm_owned", "momentum", 3 * count);
-  const auto energy = read_doubles(reply, kFdm, "fdm_owned", "E", count);
+  const auto rho_view = cosim::view_array<double>(reply, "fdm_owned", "rho");
+  const auto momentum_view = cosim::view_array<double>(reply, "fdm_owned", "momentum");
+  const auto energy_view = cosim::view_array<double>(reply, "fdm_owned", "E");
+  const auto rho = rho_view.values(), momentum = momentum_view.values(),
+             energy = energy_view.values();
+  check_value_count(reply, kFdm, "fdm_owned", "rho", rho.size(), count);
+  check_value_count(reply, kFdm, "fdm_owned", "momentum", momentum.size(), 3 * count);
+  check_value_count(reply, kFdm, "fdm_owned", "E", energy.size(), count);
   Totals totals;
   const double v = geometry_.cell_volume;
   for (std::size_t i = 0; i < count; ++i) {
@@ -256,10 +287,10 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
         dt_last_ = plan.dt;
       }
       const std::size_t n = strip_layout_.box.count();
-      strip_now_.rho = read_doubles(reply, kFdm, "strip_cells", "rho", n);
-      strip_now_.energy = read_doubles(reply, kFdm, "strip_cells", "E", n);
-      strip_now_.pressure = read_doubles(reply, kFdm, "strip_cells", "pressure", n);
-      from_wire_vectors<Dim>(read_doubles(reply, kFdm, "strip_cells", "momentum", 3 * n), layout_,
+      read_doubles(reply, kFdm, "strip_cells", "rho", n, strip_now_.rho);
+      read_doubles(reply, kFdm, "strip_cells", "E", n, strip_now_.energy);
+      read_doubles(reply, kFdm, "strip_cells", "pressure", n, strip_now_.pressure);
+      read_wire_vectors<Dim>(reply, kFdm, "strip_cells", "momentum", n, layout_,
                              strip_now_.momentum);
       if (rule_.reference_mass == 0.0) {
         // m_e of T (4-15): the mass of a zone particle at the densest inner strip cell.
@@ -289,11 +320,11 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
     switch (mpm_ops_[i]) {
       case Op::export_ghost: {
         const std::size_t nodes = ghost_nodes_.count();
-        ghost_node_mass_ = read_doubles(reply, kMpm, "ghost_nodes", "mass", nodes);
-        from_wire_vectors<Dim>(read_doubles(reply, kMpm, "ghost_nodes", "momentum", 3 * nodes),
-                               layout_, ghost_node_momentum_);
-        ghost_cell_energy_ =
-            read_doubles(reply, kMpm, "ghost_nodes", "internal_energy", ghost_cells_.count());
+        read_doubles(reply, kMpm, "ghost_nodes", "mass", nodes, ghost_node_mass_);
+        read_wire_vectors<Dim>(reply, kMpm, "ghost_nodes", "momentum", nodes, layout_,
+                               ghost_node_momentum_);
+        read_doubles(reply, kMpm, "ghost_nodes", "internal_energy", ghost_cells_.count(),
+                     ghost_cell_energy_);
         have_ghost_source_ = true;
         break;
       }
@@ -304,19 +335,22 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
         const auto n = static_cast<std::size_t>(result.removed().removed());
         traffic_.removed = n;
         if (n == 0) break;
-        removed_mass_ = read_doubles(reply, kMpm, "crossed", "mass", n);
-        removed_energy_ = read_doubles(reply, kMpm, "crossed", "internal_energy", n);
-        from_wire_vectors<Dim>(read_doubles(reply, kMpm, "crossed", "position", 3 * n), layout_,
-                               removed_position_);
-        from_wire_vectors<Dim>(read_doubles(reply, kMpm, "crossed", "velocity", 3 * n), layout_,
-                               removed_velocity_);
+        read_doubles(reply, kMpm, "crossed", "mass", n, removed_mass_);
+        read_doubles(reply, kMpm, "crossed", "internal_energy", n, removed_energy_);
+        read_wire_vectors<Dim>(reply, kMpm, "crossed", "position", n, layout_, removed_position_);
+        read_wire_vectors<Dim>(reply, kMpm, "crossed", "velocity", n, layout_, removed_velocity_);
         break;
       }
       case Op::export_particles: {
         const auto n = static_cast<std::size_t>(result.exported().count());
-        const auto mass = read_doubles(reply, kMpm, "mpm_zone", "mass", n);
-        const auto velocity = read_doubles(reply, kMpm, "mpm_zone", "velocity", 3 * n);
-        const auto energy = read_doubles(reply, kMpm, "mpm_zone", "internal_energy", n);
+        const auto mass_view = cosim::view_array<double>(reply, "mpm_zone", "mass");
+        const auto velocity_view = cosim::view_array<double>(reply, "mpm_zone", "velocity");
+        const auto energy_view = cosim::view_array<double>(reply, "mpm_zone", "internal_energy");
+        const auto mass = mass_view.values(), velocity = velocity_view.values(),
+                   energy = energy_view.values();
+        check_value_count(reply, kMpm, "mpm_zone", "mass", mass.size(), n);
+        check_value_count(reply, kMpm, "mpm_zone", "velocity", velocity.size(), 3 * n);
+        check_value_count(reply, kMpm, "mpm_zone", "internal_energy", energy.size(), n);
         mpm_totals_ = {};
         for (std::size_t p = 0; p < n; ++p) {
           double v2 = 0;

@@ -53,7 +53,7 @@ class CfdmpStep {
  public:
   CfdmpStep(const config::Scene& scene, const ZoneLayout& layout);
 
-  /// Fills the two requests of a step (empty Messages in).
+  /// Fills the two requests of a step (empty, or emptied by clear_for_reuse, wire.hpp).
   void build(const StepPlan& plan, cosim::Message& fdm, cosim::Message& mpm);
   /// Reads the replies to the requests of the last build().
   void read(const StepPlan& plan, const cosim::Message& fdm, const cosim::Message& mpm);
@@ -123,6 +123,16 @@ class CfdmpStep {
   bool have_ghost_source_ = false;
   std::vector<double> removed_mass_, removed_energy_;
   std::vector<Vec> removed_position_, removed_velocity_;
+
+  /// Scratch of build(): sized in the first steps, then reused (no allocation in a step).
+  struct Scratch {
+    std::vector<double> rho, energy, mass, volume, wire;
+    std::vector<Vec> momentum, force, position, velocity;
+    std::vector<std::size_t> index, face;
+    std::vector<std::uint64_t> ids;
+    std::vector<std::uint32_t> material;
+  };
+  Scratch scratch_;
 
   std::vector<Op> fdm_ops_, mpm_ops_;
   double fdm_dt_ = 0, mpm_dt_ = 0;

@@ -196,10 +196,11 @@ class Loop {
 
   /// One Exchange per solver, sent together; returns the two advance wall times.
   std::pair<double, double> exchange(const StepPlan& plan) {
-    cosim::Message fdm, mpm;
-    step_.build(plan, fdm, mpm);
-    hub_.send("fdm", std::move(fdm));
-    hub_.send("mpm", std::move(mpm));
+    clear_for_reuse(fdm_request_);
+    clear_for_reuse(mpm_request_);
+    step_.build(plan, fdm_request_, mpm_request_);
+    hub_.send_keeping_header("fdm", fdm_request_);
+    hub_.send_keeping_header("mpm", mpm_request_);
     const auto replies = hub_.gather(kPeers);
     step_.read(plan, replies[0], replies[1]);
     const auto& traffic = step_.traffic();
@@ -223,6 +224,7 @@ class Loop {
 
   const config::Scene& scene_;
   CfdmpStep<Dim> step_;
+  cosim::Message fdm_request_, mpm_request_;  ///< kept: a step reuses their memory
   cosim::Hub& hub_;
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;

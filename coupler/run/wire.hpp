@@ -18,6 +18,13 @@ namespace mpfd::coupler {
 namespace v1 = cosim::v1;
 
 v1::Exchange& exchange_of(cosim::Message& message);
+/// Empties an Exchange request for the next step's add_* and keeps its memory
+/// (descriptors, operations and their bodies, strings): once a step of the same
+/// kinds of operations has been built, building it again allocates nothing.
+void clear_for_reuse(cosim::Message& message);
+/// The next operation of an Exchange, for the add_* below and any new kind: a
+/// parked one of `kind` if there is one (its body kept and emptied), else a new one.
+v1::Operation& next_operation(cosim::Message& message, v1::Operation::OpCase kind);
 void add_apply(cosim::Message& message, std::string_view region, v1::ApplyRegion::Mode mode);
 void add_export(cosim::Message& message, std::string_view region,
                 std::initializer_list<const char*> quantities = {});
@@ -50,11 +57,13 @@ void from_wire_vectors(std::span<const double> wire, const ZoneLayout& layout,
     for (int d = 0; d < Dim; ++d) out[i](d) = wire[3 * i + layout.active[d]];
 }
 
-/// Dim-axis vectors -> [n, 3] (inactive components set to `fill[axis]`).
+/// Dim-axis vectors -> [n, 3] in `wire` (inactive components set to `fill[axis]`);
+/// returns it. `wire` is the caller's scratch: once large enough it is not reallocated.
 template <int Dim>
-std::vector<double> to_wire_vectors(std::span<const handshake::Vec<Dim>> vectors,
-                                    const ZoneLayout& layout, const std::array<double, 3>& fill) {
-  std::vector<double> wire(3 * vectors.size());
+std::span<const double> to_wire_vectors(std::span<const handshake::Vec<Dim>> vectors,
+                                        const ZoneLayout& layout, const std::array<double, 3>& fill,
+                                        std::vector<double>& wire) {
+  wire.resize(3 * vectors.size());
   for (std::size_t i = 0; i < vectors.size(); ++i) {
     for (int a = 0; a < 3; ++a) wire[3 * i + a] = fill[a];
     for (int d = 0; d < Dim; ++d) wire[3 * i + layout.active[d]] = vectors[i](d);
@@ -62,9 +71,24 @@ std::vector<double> to_wire_vectors(std::span<const handshake::Vec<Dim>> vectors
   return wire;
 }
 
-/// A copy of array `group`/`name` of a reply (F64), checked to hold `values` entries.
-std::vector<double> read_doubles(const cosim::Message& reply, std::string_view peer,
-                                 std::string_view group, std::string_view name, std::size_t values);
+/// Throws mpfd::Error naming the peer, step and array unless `got` == `expected` values.
+void check_value_count(const cosim::Message& reply, std::string_view peer, std::string_view group,
+                       std::string_view name, std::size_t got, std::size_t expected);
+
+/// Array `group`/`name` of a reply (F64), checked to hold `values` entries,
+/// copied into `out` (reusing its memory).
+void read_doubles(const cosim::Message& reply, std::string_view peer, std::string_view group,
+                  std::string_view name, std::size_t values, std::vector<double>& out);
+
+/// Array `group`/`name` of a reply (F64, [count, 3]) as Dim-axis vectors in `out`.
+template <int Dim>
+void read_wire_vectors(const cosim::Message& reply, std::string_view peer, std::string_view group,
+                       std::string_view name, std::size_t count, const ZoneLayout& layout,
+                       std::vector<handshake::Vec<Dim>>& out) {
+  const auto view = cosim::view_array<double>(reply, group, name);
+  check_value_count(reply, peer, group, name, view.values().size(), 3 * count);
+  from_wire_vectors<Dim>(view.values(), layout, out);
+}
 
 /// The result of operation `index` of an ExchangeResult; throws mpfd::Error
 /// naming the peer if the reply has fewer results or is no ExchangeResult.

@@ -65,7 +65,7 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
         result.mutable_exported()->set_region(region.name);
         result.mutable_exported()->set_count(
             region.kind == cosim::v1::REGION_KIND_NODES
-                ? export_node_region(solver, region, op.export_region(), reply)
+                ? export_node_region(solver, region, op.export_region(), zone.node_box_map, reply)
                 : export_particle_region(solver, region, op.export_region(), reply));
         break;
       }

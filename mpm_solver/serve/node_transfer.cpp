@@ -52,8 +52,10 @@ void check_apply_array(const ZoneRegion& region, const cosim::v1::ArrayDescripto
                " components), got " + std::to_string(count));
 }
 
-/// Sum of m_p e_p per cell of the region's node box, in box C order.
-std::vector<double> cell_internal_energy(const MpmSolver& solver, const ZoneRegion& region) {
+/// Sum of m_p e_p per cell of the region's node box, in box C order, over the
+/// particles that reach the box (a particle in one of its cells reaches it).
+std::vector<double> cell_internal_energy(const MpmSolver& solver, const ZoneRegion& region,
+                                         std::span<const std::int32_t> reaching) {
   const auto& g = solver.grid();
   grid::Index3 lo = region.lo, hi = region.hi, extent{};
   for (int a = 0; a < 3; ++a) {
@@ -62,7 +64,8 @@ std::vector<double> cell_internal_energy(const MpmSolver& solver, const ZoneRegi
   }
   std::vector<double> energy(region.cell_count(g), 0.0);
   const ParticleSet& ps = solver.particles();
-  for (std::size_t p = 0; p < ps.size(); ++p) {
+  for (const std::int32_t index : reaching) {
+    const auto p = static_cast<std::size_t>(index);
     grid::Index3 cell{};
     bool inside = true;
     for (int a = 0; a < 3 && inside; ++a) {
@@ -115,8 +118,9 @@ void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
   }
 }
 
-std::uint64_t export_node_region(MpmSolver& solver, const ZoneRegion& region,
-                                 const cosim::v1::ExportRegion& request, cosim::Message& reply) {
+std::uint64_t export_node_region(const MpmSolver& solver, const ZoneRegion& region,
+                                 const cosim::v1::ExportRegion& request, NodeBoxMap& map,
+                                 cosim::Message& reply) {
   std::vector<std::string> names(request.quantities().begin(), request.quantities().end());
   if (names.empty()) names = region.quantities;
   for (const auto& name : names)
@@ -124,27 +128,17 @@ std::uint64_t export_node_region(MpmSolver& solver, const ZoneRegion& region,
       reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, region, name,
              name == "internal_force" ? "is applied, not exported"
                                       : "not declared for it in Setup, so it cannot be exported");
-  solver.map_particles_to_nodes();
+  solver.map_particles_to_node_box(region.lo, region.hi, map);
   const std::size_t count = region.box_count();
   for (const auto& name : names) {
     if (name == "internal_energy") {
-      cosim::add_array(reply, {region.name, name, {}, "J"}, cell_internal_energy(solver, region));
-      continue;
-    }
-    const bool mass = name == "mass";
-    std::vector<double> values(count * (mass ? 1 : 3));
-    for_each_box_index(region.lo, region.hi, [&](std::size_t n, const grid::Index3& node) {
-      const NodeState state = solver.node_state(node);
-      if (mass) {
-        values[n] = state.mass;
-      } else {
-        for (std::size_t a = 0; a < 3; ++a) values[3 * n + a] = state.momentum[a];
-      }
-    });
-    if (mass) {
-      cosim::add_array(reply, {region.name, name, {}, "kg"}, std::move(values));
+      cosim::add_array(reply, {region.name, name, {}, "J"},
+                       cell_internal_energy(solver, region, map.reaching));
+    } else if (name == "mass") {
+      cosim::add_array(reply, {region.name, name, {}, "kg"}, std::span<const double>(map.mass));
     } else {
-      cosim::add_array(reply, {region.name, name, {count, 3}, "kg*m/s"}, std::move(values));
+      cosim::add_array(reply, {region.name, name, {count, 3}, "kg*m/s"},
+                       std::span<const double>(map.momentum));
     }
   }
   return count;

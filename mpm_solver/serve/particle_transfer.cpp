@@ -44,18 +44,32 @@ bool has_array(const cosim::Message& request, const std::string& group, const st
   return false;
 }
 
-/// Whether particle p lies in the region's box of cells (active axes only).
-bool inside(const MpmSolver& solver, const ZoneRegion& region, std::size_t p) {
-  const auto& g = solver.grid();
-  for (int a = 0; a < 3; ++a) {
-    if (!g.is_active(a)) continue;
-    const double x = solver.particles().position[static_cast<std::size_t>(a)][p];
-    const double lower = g.origin()[a] + region.lo[a] * g.spacing()[a];
-    const double upper = g.origin()[a] + region.hi[a] * g.spacing()[a];
-    if (!(x >= lower && x < upper)) return false;
+/// The region's box of cells in metres on the active axes, computed once per scan.
+class RegionBounds {
+ public:
+  RegionBounds(const MpmSolver& solver, const ZoneRegion& region) : ps_(solver.particles()) {
+    const auto& g = solver.grid();
+    for (int a = 0; a < 3; ++a) {
+      active_[a] = g.is_active(a);
+      lower_[a] = g.origin()[a] + region.lo[a] * g.spacing()[a];
+      upper_[a] = g.origin()[a] + region.hi[a] * g.spacing()[a];
+    }
   }
-  return true;
-}
+  /// Whether particle p lies in the box (active axes only).
+  [[nodiscard]] bool contain(std::size_t p) const {
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (!active_[a]) continue;
+      const double x = ps_.position[a][p];
+      if (!(x >= lower_[a] && x < upper_[a])) return false;
+    }
+    return true;
+  }
+
+ private:
+  const ParticleSet& ps_;
+  bool active_[3] = {};
+  double lower_[3] = {}, upper_[3] = {};
+};
 
 void append_batch(const ParticleBatch& batch, const std::string& group, cosim::Message& reply) {
   const std::uint64_t n = batch.size();
@@ -113,7 +127,16 @@ std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
       throw cosim::ProtocolError(
           cosim::v1::ERROR_CODE_UNKNOWN_REGION,
           "RemoveParticles: left_region '" + left_region->name + "' is not a PARTICLES region");
-    for (std::size_t p = 0; p < ps.size(); ++p) flags[p] = inside(solver, *left_region, p) ? 0 : 1;
+    const RegionBounds region(solver, *left_region);
+    std::size_t leaving = 0;
+    for (std::size_t p = 0; p < ps.size(); ++p) {
+      flags[p] = region.contain(p) ? 0 : 1;
+      leaving += flags[p];
+    }
+    if (leaving == 0) {  // the usual step: nothing to collect, no second scan
+      append_batch(ParticleBatch{}, op.group(), reply);
+      return 0;
+    }
   } else {
     std::size_t n = 0;
     const auto ids = read_array<std::uint64_t>(request, "RemoveParticles", op.group(), "id", 1, n);
@@ -145,8 +168,9 @@ std::uint64_t export_particle_region(const MpmSolver& solver, const ZoneRegion& 
                                      "': not declared for it in Setup, so it cannot be exported");
   const ParticleSet& ps = solver.particles();
   std::vector<std::size_t> members;
+  const RegionBounds bounds(solver, region);
   for (std::size_t p = 0; p < ps.size(); ++p)
-    if (inside(solver, region, p)) members.push_back(p);
+    if (bounds.contain(p)) members.push_back(p);
   const std::uint64_t n = members.size();
   for (const auto& name : names) {
     if (name == "id" || name == "material") {

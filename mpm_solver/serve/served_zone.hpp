@@ -30,6 +30,7 @@ struct ServedZone {
   bool dormant;
   std::optional<io::SnapshotWriter> snapshots;  // made at the first WriteOutput
   SnapshotParticles snapshot_fields;
+  NodeBoxMap node_box_map;  ///< scratch of the NODES exports, kept so they do not allocate
 
   /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
   [[nodiscard]] double time() const { return start_time + solver.time(); }
