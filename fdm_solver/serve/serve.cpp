@@ -22,7 +22,8 @@ cosim::v1::Hello hello() {
   hello.set_software("mpfd fdm_solver");
   hello.set_min_major(cosim::protocol_major);
   hello.set_max_major(cosim::protocol_major);
-  for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint"})
+  for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint",
+                                 "face_crossing", "boundary_outflow"})
     hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
