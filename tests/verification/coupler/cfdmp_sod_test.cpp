@@ -193,5 +193,37 @@ TEST(CfdmpSod, Fast_closed_box_conservation_over_1000_steps) {
   EXPECT_LT(std::abs(energy), 5e-4);
 }
 
+TEST(CfdmpSod, Fast_open_ends_audit_counts_the_outflow) {
+  // Both x faces outflow, to t = 0.52 s: the shock leaves through the MPM's
+  // face (x = 1, t ~ 0.29 s), the rarefaction reaches the FDM's (x = 0, t ~ 0.42 s).
+  std::ifstream in(kScene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  yaml.replace(yaml.find("end: 0.2,"), 9, "end: 0.52,");
+  yaml.replace(yaml.find("x_lower: wall, x_upper: wall"), 28, "x_lower: outflow, x_upper: outflow");
+  const auto scene_file = temp_dir("open-scene.yaml");
+  std::ofstream(scene_file) << yaml;
+  const auto summary = run_coupled(scene_file, temp_dir("open"));
+  const auto& zones = summary["details"]["zones"];
+  const double fdm_out = zones["fdm_outflow"]["mass"], mpm_out = zones["mpm_outflow"]["mass"];
+  const double mass = summary["conservation"]["mass"]["relative_error"];
+  const double energy = summary["conservation"]["energy"]["relative_error"];
+  const double initial = summary["conservation"]["mass"]["initial"];
+  std::printf("open ends: outflow fdm %.4e kg, mpm %.4e kg (of %.4e); mass error %.4e, energy "
+              "error %.4e\n",
+              fdm_out, mpm_out, initial, mass, energy);
+  EXPECT_TRUE(summary["details"]["protocol"]["fdm_outflow"].get<bool>());
+  EXPECT_TRUE(summary["details"]["protocol"]["mpm_outflow"].get<bool>());
+  // Gas enters at x = 0 (the rarefaction draws it in: fdm_out < 0) and leaves at
+  // x = 1, each over 1 % of the mass: an audit without them would miss that.
+  EXPECT_GT(std::abs(fdm_out), 1e-2 * initial);
+  EXPECT_GT(mpm_out, 1e-2 * initial);
+  EXPECT_DOUBLE_EQ(summary["conservation"]["mass"]["boundary_outflow"].get<double>(),
+                   fdm_out + mpm_out);
+  EXPECT_LT(std::abs(mass), 1e-12);
+  EXPECT_LT(std::abs(energy), 5e-3);
+}
+
 }  // namespace
 }  // namespace mpfd::coupler
