@@ -69,7 +69,7 @@ struct CrossedAmounts {
 /// holds the pressure impulse and work of its face, which the MPM gets from the
 /// interface force (4-9) instead; p_f = ½(p_a + p_b) estimates the face pressure
 /// (p_a alone, as (4-9), gave an MPM-part Sod error of 1.67e-2 instead of
-/// 1.49e-2); ρ_f is (4-10), volume m/ρ_f, travel m/(ρ_f A). Where m <= 0 the
+/// 1.61e-2, docs/coupler.md); ρ_f is (4-10), volume m/ρ_f, travel m/(ρ_f A). Where m <= 0 the
 /// FDM's cell a received the material through its own flux while the MPM's
 /// crossing particles are deposited too: the parcel and those advective amounts
 /// (negative) go to `returned`, which cancels them. `strip` and `pressure` are
