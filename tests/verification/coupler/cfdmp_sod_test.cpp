@@ -247,9 +247,10 @@ TEST(CfdmpSod, Fast_open_ends_audit_counts_the_outflow) {
   const double mass = summary["conservation"]["mass"]["relative_error"];
   const double energy = summary["conservation"]["energy"]["relative_error"];
   const double initial = summary["conservation"]["mass"]["initial"];
-  std::printf("open ends: outflow fdm %.4e kg, mpm %.4e kg (of %.4e); mass error %.4e, energy "
-              "error %.4e\n",
-              fdm_out, mpm_out, initial, mass, energy);
+  std::printf(
+      "open ends: outflow fdm %.4e kg, mpm %.4e kg (of %.4e); mass error %.4e, energy "
+      "error %.4e\n",
+      fdm_out, mpm_out, initial, mass, energy);
   EXPECT_TRUE(summary["details"]["protocol"]["fdm_outflow"].get<bool>());
   EXPECT_TRUE(summary["details"]["protocol"]["mpm_outflow"].get<bool>());
   // Gas enters at x = 0 (the rarefaction draws it in: fdm_out < 0) and leaves at
