@@ -490,6 +490,7 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
   steps_ = steps;
   outflow_ = outflow;
   for (auto& per_cell : face_outflow_) std::fill(per_cell.begin(), per_cell.end(), 0.0);
+  clear_watched_crossing();
   limit_after_step_.reset();
   // Exactness over speed: every cell is updated from here on (skip_quiet would
   // need the still region, which a checkpoint does not record).

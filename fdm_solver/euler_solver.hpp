@@ -68,7 +68,8 @@ class EulerSolver {
   [[nodiscard]] const ClosureReport& last_closure() const { return closure_; }
 
   /// Continues from a checkpoint: replaces the state, the clock (time,
-  /// steps), the accumulated boundary outflow and, in a multi-material solver,
+  /// steps), the accumulated boundary outflow (face_outflow() and the watched
+  /// crossing restart from zero) and, in a multi-material solver,
   /// the tracker's state (which it must then be given; saved from tracker()).
   /// The disturbed box becomes the whole grid, since which cells are still is
   /// not part of a checkpoint: exactness over speed after a restore (a still
