@@ -83,6 +83,9 @@ EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
   }
   box_ = options_.skip_quiet ? disturbed_cells(state_, boundaries_) : whole_grid(state_.grid);
   quiet_flux_ = quiet_face_flux(state_, boundaries_, eos_);
+  for (int face = 0; face < 6; ++face)
+    face_outflow_[static_cast<std::size_t>(face)].assign(
+        kVariables * quiet_flux_.flux[static_cast<std::size_t>(face)][0].size(), 0.0);
   initial_line_limit_.resize(static_cast<std::size_t>(n[1]) * n[2]);
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
@@ -274,6 +277,14 @@ double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
     crossing.active[static_cast<std::size_t>(b)] = g.is_active(b);
   }
   double leaving[2][kVariables] = {};  // arrays, for the OpenMP reduction
+  // Boundary cells of the faces normal to axis, numbered as in QuietFaceFlux.
+  const int q1 = (axis + 1) % 3, q2 = (axis + 2) % 3;
+  const auto face_line = [&](const grid::Index3& cell) {
+    return static_cast<std::size_t>(cell[q1] + n[q1] * cell[q2]);
+  };
+  std::vector<double>& lower_outflow = face_outflow_[static_cast<std::size_t>(2 * axis)];
+  std::vector<double>& upper_outflow = face_outflow_[static_cast<std::size_t>(2 * axis + 1)];
+  const std::size_t tap = axis == watched_axis_ ? static_cast<std::size_t>(watched_index_) : 0;
   std::optional<std::pair<grid::Index3, BadCell>> bad;
   const long long work =
       static_cast<long long>(last[sweeps - 1] - first[sweeps - 1]) * lines1 * lines2;
@@ -291,8 +302,8 @@ double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
         const PencilBlock block{axis,        g.cell_index(origin),
                                 stride,      static_cast<std::size_t>(n[axis]),
                                 lane_stride, lanes};
-        const BlockTransfer t1{state_, block, faces, first[0], last[0], only_material_};
-        const BlockTransfer t2{state_, block, faces, first[1], last[1], only_material_};
+        const BlockTransfer t1{state_, block, faces, first[0], last[0], only_material_, tap};
+        const BlockTransfer t2{state_, block, faces, first[1], last[1], only_material_, tap};
         std::array<EndFluxes, 2> ends;
         const CrossingTimeRequest* asked = last_of_step ? &crossing : nullptr;
         const auto problem =
@@ -309,12 +320,28 @@ double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
           continue;
         }
         // Momentum slots are rotated in the pencil; map them back to x, y, z.
+        // Each block owns its lines' entries of the per-line arrays.
         for (int k = 0; k < sweeps; ++k)
-          for (std::size_t s = 0; s < kVariables; ++s) {
-            std::size_t v = s;
-            if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
-            if (at_lower[k]) leaving[k][v] -= ends[k].lower[s] * face_area;
-            if (at_upper[k]) leaving[k][v] += ends[k].upper[s] * face_area;
+          for (std::size_t lane = 0; lane < lanes; ++lane) {
+            grid::Index3 cell = origin;
+            cell[a1] += static_cast<int>(lane);
+            const std::size_t line = face_line(cell);
+            for (std::size_t s = 0; s < kVariables; ++s) {
+              std::size_t v = s;
+              if (s >= 1 && s <= 3) v = 1 + (static_cast<std::size_t>(axis) + s - 1) % 3;
+              const double down = ends[k].lower[lane][s] * face_area;
+              const double up = ends[k].upper[lane][s] * face_area;
+              if (at_lower[k]) {
+                leaving[k][v] -= down;
+                lower_outflow[line * kVariables + v] -= down;
+              }
+              if (at_upper[k]) {
+                leaving[k][v] += up;
+                upper_outflow[line * kVariables + v] += up;
+              }
+              if (tap != 0)
+                watched_crossing_[line * kVariables + v] += ends[k].tapped[lane][s] * face_area;
+            }
           }
       }
   }
@@ -359,7 +386,40 @@ void EulerSolver::count_quiet_faces(int axis, double dt, bool lower_updated, boo
             still -= quiet_flux_.flux[face][v][static_cast<std::size_t>(l1 + g.cells()[a1] * l2)];
       outflow_[v] += sign * still * impulse;
     }
+    // The same per boundary cell, for face_outflow().
+    auto& cells = face_outflow_[static_cast<std::size_t>(face)];
+    for (int l2 = 0; l2 < g.cells()[a2]; ++l2)
+      for (int l1 = 0; l1 < g.cells()[a1]; ++l1) {
+        const bool swept = updated && l1 >= box_.lower[a1] && l1 < box_.upper[a1] &&
+                           l2 >= box_.lower[a2] && l2 < box_.upper[a2];
+        if (swept) continue;
+        const auto line = static_cast<std::size_t>(l1 + g.cells()[a1] * l2);
+        for (std::size_t v = 0; v < kVariables; ++v)
+          cells[line * kVariables + v] += sign * quiet_flux_.flux[face][v][line] * impulse;
+      }
   }
+}
+
+void EulerSolver::watch_face(int axis, int index) {
+  const auto& g = state_.grid;
+  if (axis < 0 || axis > 2 || !g.is_active(axis) || index <= 0 || index >= g.cells()[axis])
+    throw Error(
+        "fdm_solver: a watched face must lie between two cells of an active axis; got "
+        "axis " +
+        std::to_string(axis) + ", face below cell " + std::to_string(index));
+  ActiveBox faces = whole_grid(g);
+  faces.lower[axis] = index - 1;
+  faces.upper[axis] = index + 1;
+  (void)state_for_update(faces);
+  watched_axis_ = axis;
+  watched_index_ = index;
+  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+  watched_crossing_.assign(kVariables * static_cast<std::size_t>(g.cells()[a1]) * g.cells()[a2],
+                           0.0);
+}
+
+void EulerSolver::clear_watched_crossing() {
+  std::fill(watched_crossing_.begin(), watched_crossing_.end(), 0.0);
 }
 
 void EulerSolver::update_materials() {
@@ -429,6 +489,8 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
   time_ = time;
   steps_ = steps;
   outflow_ = outflow;
+  for (auto& per_cell : face_outflow_) std::fill(per_cell.begin(), per_cell.end(), 0.0);
+  clear_watched_crossing();
   limit_after_step_.reset();
   // Exactness over speed: every cell is updated from here on (skip_quiet would
   // need the still region, which a checkpoint does not record).

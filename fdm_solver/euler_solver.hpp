@@ -68,7 +68,8 @@ class EulerSolver {
   [[nodiscard]] const ClosureReport& last_closure() const { return closure_; }
 
   /// Continues from a checkpoint: replaces the state, the clock (time,
-  /// steps), the accumulated boundary outflow and, in a multi-material solver,
+  /// steps), the accumulated boundary outflow (face_outflow() and the watched
+  /// crossing restart from zero) and, in a multi-material solver,
   /// the tracker's state (which it must then be given; saved from tracker()).
   /// The disturbed box becomes the whole grid, since which cells are still is
   /// not part of a checkpoint: exactness over speed after a restore (a still
@@ -81,6 +82,23 @@ class EulerSolver {
   /// What has left through the domain faces since the start (momentum: the
   /// impulse of walls included).
   [[nodiscard]] const Totals& outflow() const { return outflow_; }
+  /// outflow() per boundary cell of domain face `face` (config::Face order;
+  /// cells numbered as in QuietFaceFlux), [cell * kVariables + v]. Since the
+  /// start or the last restore (a checkpoint keeps only the sums).
+  [[nodiscard]] const std::vector<double>& face_outflow(int face) const {
+    return face_outflow_[static_cast<std::size_t>(face)];
+  }
+
+  /// From now on counts what crosses the faces normal to `axis` between cells
+  /// index - 1 and index (0 < index < cells along axis) toward +axis: a
+  /// coupling face. Those cells join the disturbed region for good, so that
+  /// every sweep reports that face. Throws mpfd::Error for a face not inside.
+  void watch_face(int axis, int index);
+  /// What crossed the watched face since the last clear, per line (numbered as
+  /// QuietFaceFlux numbers a face's cells), [line * kVariables + v]: mass
+  /// [kg], momentum x/y/z [kg m/s], total energy [J]. Empty if none is watched.
+  [[nodiscard]] const std::vector<double>& watched_crossing() const { return watched_crossing_; }
+  void clear_watched_crossing();
 
  private:
   /// One sweep, or two in a row along `axis` (twice); the last of a step
@@ -116,6 +134,9 @@ class EulerSolver {
   std::vector<double> energy_, pressure_;        // scratch for the closure
   ClosureReport closure_;
   Totals outflow_{};
+  std::array<std::vector<double>, 6> face_outflow_;  // see face_outflow()
+  int watched_axis_ = -1, watched_index_ = 0;        // see watch_face()
+  std::vector<double> watched_crossing_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   double cell_updates_ = 0.0;

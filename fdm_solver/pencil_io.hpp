@@ -51,6 +51,9 @@ struct BlockTransfer {
   /// The material of every cell of the grid, if they share one (no mixed
   /// cells): the block's materials need not be gathered.
   std::optional<std::uint8_t> only_material;
+  /// 0, or a cell in [first, last] whose lower face's crossing the sweep
+  /// reports (EndFluxes::tapped): a coupling face (proto/README.md §14).
+  std::size_t tap = 0;
 };
 
 /// Copies the material (and mixed cells' EOS) of cells [first - kGhost,

@@ -436,17 +436,20 @@ std::optional<std::uint8_t> block_material(Pencil& pencil, const BlockTransfer& 
 }
 
 /// What crossed the ends of t's range: dt F - dx D at the faces below its
-/// first cell and above its last.
+/// first cell and above its last, and below cell t.tap if set (written, not added).
 void add_end_fluxes(const Pencil& pencil, const BlockTransfer& t, const SweepStep& step,
                     EndFluxes& ends) {
   const std::size_t w = t.block.lanes;
   const std::size_t begin = (t.first + kGhost) * w, end = (t.last + kGhost) * w;
+  const std::size_t tap = (t.tap + kGhost) * w;
   for (std::size_t v = 0; v < 5; ++v) {
     const double* f = pencil.flux[v].data();
     const double* d = pencil.diffusion[v].data();
     for (std::size_t lane = 0; lane < w; ++lane) {
-      ends.lower[v] += step.dt * f[begin - w + lane] - step.dx * d[begin - w + lane];
-      ends.upper[v] += step.dt * f[end - w + lane] - step.dx * d[end - w + lane];
+      ends.lower[lane][v] = step.dt * f[begin - w + lane] - step.dx * d[begin - w + lane];
+      ends.upper[lane][v] = step.dt * f[end - w + lane] - step.dx * d[end - w + lane];
+      if (t.tap != 0)
+        ends.tapped[lane][v] = step.dt * f[tap - w + lane] - step.dx * d[tap - w + lane];
     }
   }
 }

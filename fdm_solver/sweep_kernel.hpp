@@ -44,11 +44,16 @@ struct BadCell {
   double pressure;
 };
 
-/// What crossed the two ends of the updated range during the sweep, summed
-/// over the lanes, per unit face area: dt F - dx D (kg/m^2, kg/(m s), J/m^2).
+/// What crossed faces of the sweep during it, per lane and unit face area, in
+/// the +axis direction: dt F - dx D (kg/m^2, kg/(m s), J/m^2; pencil variables).
+/// Written by the sweep for its block's lanes only (and `tapped` only if a tap
+/// is set), so left uninitialised: a block of one x-line would else clear
+/// 16 lanes' worth for each line.
 struct EndFluxes {
-  std::array<double, 5> lower{};
-  std::array<double, 5> upper{};
+  using Lanes = std::array<std::array<double, 5>, kMaxLanes>;
+  Lanes lower;   ///< the face below the first updated cell
+  Lanes upper;   ///< the face above the last updated cell
+  Lanes tapped;  ///< the face below cell BlockTransfer::tap, if set
 };
 
 /// Asks a sweep for the smallest crossing time dx_a / (|u_a| + c) over its

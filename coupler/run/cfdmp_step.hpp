@@ -32,6 +32,13 @@ struct Totals {
   double energy = 0;
 };
 
+/// What the solvers' Hello capabilities offer beyond protocol v1.0 (proto §14).
+struct SolverFeatures {
+  bool fdm_face_crossing = false;  ///< fdm exports `coupling_face` (crossed_*): exact parcels
+  bool fdm_outflow = false;        ///< fdm exports outflow_* of `fdm_owned`
+  bool mpm_outflow = false;        ///< mpm exports outflow_* of `mpm_zone`
+};
+
 struct StepPlan {
   bool advance = false;  ///< false: step 0 or before output (no Advance, no injection)
   double dt = 0;         ///< Δt^n [s]
@@ -51,7 +58,7 @@ struct StepTraffic {
 template <int Dim>
 class CfdmpStep {
  public:
-  CfdmpStep(const config::Scene& scene, const ZoneLayout& layout);
+  CfdmpStep(const config::Scene& scene, const ZoneLayout& layout, SolverFeatures features = {});
 
   /// Fills the two requests of a step (empty, or emptied by clear_for_reuse, wire.hpp).
   void build(const StepPlan& plan, cosim::Message& fdm, cosim::Message& mpm);
@@ -66,6 +73,11 @@ class CfdmpStep {
   [[nodiscard]] const Totals& mpm_totals() const { return mpm_totals_; }
   /// What waits in the face parcels (neither solver holds it).
   [[nodiscard]] Totals parcel_totals() const;
+  /// What has left the domain through open faces (momentum: and wall impulse)
+  /// since the start, as the solvers report it (zero where they do not).
+  [[nodiscard]] const Totals& fdm_outflow() const { return fdm_outflow_; }
+  [[nodiscard]] const Totals& mpm_outflow() const { return mpm_outflow_; }
+  [[nodiscard]] const SolverFeatures& features() const { return features_; }
   [[nodiscard]] const StepTraffic& traffic() const { return traffic_; }
 
  private:
@@ -75,6 +87,7 @@ class CfdmpStep {
     inject,
     advance,
     export_strip,
+    export_face,
     export_owned,
     export_ghost,
     discard,
@@ -95,9 +108,12 @@ class CfdmpStep {
   void read_fdm(const StepPlan& plan, const cosim::Message& reply);
   void read_mpm(const cosim::Message& reply);
   [[nodiscard]] Totals cell_totals(const cosim::Message& reply, std::size_t count) const;
+  void read_crossed(const cosim::Message& reply);
+  void add_face_fluxes(const handshake::Amounts<Dim>& returned);
 
   const config::Scene& scene_;
   ZoneLayout layout_;
+  SolverFeatures features_;
   handshake::CellGeometry<Dim> geometry_;
   handshake::StripLayout<Dim> strip_layout_;
   handshake::InterfaceStencil<Dim> stencil_;
@@ -107,6 +123,7 @@ class CfdmpStep {
   std::vector<std::size_t> corners_;
   std::vector<std::size_t>
       outer_in_deposit_;  ///< per face cell: its outer cell's place in deposit_cells
+  std::vector<std::size_t> face_in_export_;  ///< per face cell: its place in coupling_face
   std::array<double, 3> inactive_centre_{};  ///< particle coordinates on inactive axes
   handshake::InjectionRule rule_;
   std::uint32_t fluid_material_ = 0;
@@ -116,6 +133,8 @@ class CfdmpStep {
   bool flux_due_ = false;
   double dt_last_ = 0;
   handshake::Parcels<Dim> parcels_;
+  std::vector<double> crossed_mass_, crossed_energy_;  ///< per face cell, into the zone
+  std::vector<Vec> crossed_momentum_;
   std::vector<double> returned_mass_, returned_energy_;
   std::vector<Vec> returned_momentum_;
   std::vector<double> ghost_node_mass_, ghost_cell_energy_;
@@ -136,7 +155,7 @@ class CfdmpStep {
 
   std::vector<Op> fdm_ops_, mpm_ops_;
   double fdm_dt_ = 0, mpm_dt_ = 0;
-  Totals fdm_totals_, mpm_totals_;
+  Totals fdm_totals_, mpm_totals_, fdm_outflow_, mpm_outflow_;
   StepTraffic traffic_;
 };
 

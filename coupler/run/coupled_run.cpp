@@ -47,7 +47,8 @@ v1::UniformGrid wire_grid(const config::Scene& scene) {
 
 /// The Setup of each solver (proto §5, regions of §6).
 std::vector<cosim::Message> setups(const config::Scene& scene, const std::string& text,
-                                   const ZoneLayout& layout, const std::filesystem::path& out) {
+                                   const ZoneLayout& layout, const SolverFeatures& features,
+                                   const std::filesystem::path& out) {
   std::vector<cosim::Message> messages(2);
   auto& fdm = *messages[0].header.mutable_setup();
   fdm.mutable_zone()->set_name("fdm");
@@ -62,7 +63,18 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
       make_region("strip_cells", cells, layout.strip_cells, {"rho", "momentum", "E", "pressure"});
   *fdm.add_regions() =
       make_region("deposit_cells", cells, layout.deposit_cells, {"rho", "momentum", "E"});
-  *fdm.add_regions() = make_region("fdm_owned", cells, layout.fdm_owned, {"rho", "momentum", "E"});
+  *fdm.add_regions() =
+      features.fdm_outflow
+          ? make_region(
+                "fdm_owned", cells, layout.fdm_owned,
+                {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"})
+          : make_region("fdm_owned", cells, layout.fdm_owned, {"rho", "momentum", "E"});
+  if (features.fdm_face_crossing) {  // v1.1 (proto §14)
+    auto& face = *fdm.add_regions();
+    face = make_region("coupling_face", v1::REGION_KIND_FACES, layout.coupling_face,
+                       {"crossed_mass", "crossed_momentum", "crossed_energy"});
+    face.set_face_axis(static_cast<std::uint32_t>(layout.face_axis));
+  }
   fdm.set_output_dir((out / "fdm").string());
 
   auto& mpm = *messages[1].header.mutable_setup();
@@ -74,8 +86,12 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
                                    {"mass", "momentum", "internal_energy"});
   *mpm.add_regions() = make_region("interface_nodes", v1::REGION_KIND_NODES, layout.interface_nodes,
                                    {"mass", "momentum", "internal_force"});
-  *mpm.add_regions() = make_region("mpm_zone", v1::REGION_KIND_PARTICLES, layout.mpm_zone,
-                                   {"mass", "velocity", "internal_energy"});
+  *mpm.add_regions() = features.mpm_outflow
+                           ? make_region("mpm_zone", v1::REGION_KIND_PARTICLES, layout.mpm_zone,
+                                         {"mass", "velocity", "internal_energy", "outflow_mass",
+                                          "outflow_momentum", "outflow_energy"})
+                           : make_region("mpm_zone", v1::REGION_KIND_PARTICLES, layout.mpm_zone,
+                                         {"mass", "velocity", "internal_energy"});
   mpm.set_output_dir((out / "mpm").string());
   return messages;
 }
@@ -87,21 +103,30 @@ double advance_seconds(const cosim::Message& reply) {
   return 0;
 }
 
-Totals sum(const Totals& a, const Totals& b, const Totals& c) {
+Totals sum(std::initializer_list<Totals> parts) {
   Totals t;
-  t.mass = a.mass + b.mass + c.mass;
-  t.energy = a.energy + b.energy + c.energy;
-  for (int k = 0; k < 3; ++k) t.momentum[k] = a.momentum[k] + b.momentum[k] + c.momentum[k];
+  for (const Totals& part : parts) {
+    t.mass += part.mass;
+    t.energy += part.energy;
+    for (int k = 0; k < 3; ++k) t.momentum[k] += part.momentum[k];
+  }
   return t;
 }
 
-std::vector<io::ConservationEntry> audit(const Totals& initial, const Totals& now) {
+bool offers(const v1::Hello& hello, std::string_view capability) {
+  const auto& list = hello.capabilities();
+  return std::find(list.begin(), list.end(), capability) != list.end();
+}
+
+std::vector<io::ConservationEntry> audit(const Totals& initial, const Totals& now,
+                                         const Totals& outflow) {
   std::vector<io::ConservationEntry> entries;
-  entries.push_back({"mass", "kg", initial.mass, now.mass, 0.0});
+  entries.push_back({"mass", "kg", initial.mass, now.mass, outflow.mass});
   const char* names[3] = {"momentum_x", "momentum_y", "momentum_z"};
   for (int k = 0; k < 3; ++k)
-    entries.push_back({names[k], "kg m/s", initial.momentum[k], now.momentum[k], 0.0});
-  entries.push_back({"energy", "J", initial.energy, now.energy, 0.0});
+    entries.push_back(
+        {names[k], "kg m/s", initial.momentum[k], now.momentum[k], outflow.momentum[k]});
+  entries.push_back({"energy", "J", initial.energy, now.energy, outflow.energy});
   return entries;
 }
 
@@ -112,9 +137,13 @@ nlohmann::json totals_json(const Totals& t) {
 template <int Dim>
 class Loop {
  public:
-  Loop(const config::Scene& scene, const ZoneLayout& layout, cosim::Hub& hub,
-       io::RunSummary& summary, const CoupledRunOptions& options)
-      : scene_(scene), step_(scene, layout), hub_(hub), summary_(summary), options_(options) {}
+  Loop(const config::Scene& scene, const ZoneLayout& layout, const SolverFeatures& features,
+       cosim::Hub& hub, io::RunSummary& summary, const CoupledRunOptions& options)
+      : scene_(scene),
+        step_(scene, layout, features),
+        hub_(hub),
+        summary_(summary),
+        options_(options) {}
 
   CoupledRunReport run() {
     const auto start = Clock::now();
@@ -165,7 +194,8 @@ class Loop {
 
   void record_summary(const std::string& status, double wall) {
     const Totals now = current();
-    const auto entries = audit(initial_, now);
+    // What left through open faces (0 from a solver that does not report it, v1.0).
+    const auto entries = audit(initial_, now, sum({step_.fdm_outflow(), step_.mpm_outflow()}));
     summary_.set_status(status);
     summary_.set_progress(report_.steps, report_.time, scene_.time.end, wall);
     summary_.set_conservation(entries);
@@ -173,7 +203,13 @@ class Loop {
     report_.energy_error = entries[4].relative_error(0);
     summary_.set_detail("zones", {{"fdm_owned", totals_json(step_.fdm_totals())},
                                   {"mpm", totals_json(step_.mpm_totals())},
-                                  {"parcels", totals_json(step_.parcel_totals())}});
+                                  {"parcels", totals_json(step_.parcel_totals())},
+                                  {"fdm_outflow", totals_json(step_.fdm_outflow())},
+                                  {"mpm_outflow", totals_json(step_.mpm_outflow())}});
+    const auto& features = step_.features();
+    summary_.set_detail("protocol", {{"fdm_face_crossing", features.fdm_face_crossing},
+                                     {"fdm_outflow", features.fdm_outflow},
+                                     {"mpm_outflow", features.mpm_outflow}});
     summary_.set_detail("crossing", {{"injected_particles", injected_},
                                      {"removed_particles", removed_},
                                      {"injected_mass_kg", injected_mass_},
@@ -191,7 +227,7 @@ class Loop {
 
  private:
   [[nodiscard]] Totals current() const {
-    return sum(step_.fdm_totals(), step_.mpm_totals(), step_.parcel_totals());
+    return sum({step_.fdm_totals(), step_.mpm_totals(), step_.parcel_totals()});
   }
 
   /// One Exchange per solver, sent together; returns the two advance wall times.
@@ -236,9 +272,10 @@ class Loop {
 };
 
 template <int Dim>
-CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout, cosim::Hub& hub,
-                          io::RunSummary& summary, const CoupledRunOptions& options) {
-  Loop<Dim> loop(scene, layout, hub, summary, options);
+CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout,
+                          const SolverFeatures& features, cosim::Hub& hub, io::RunSummary& summary,
+                          const CoupledRunOptions& options) {
+  Loop<Dim> loop(scene, layout, features, hub, summary, options);
   try {
     return loop.run();
   } catch (...) {
@@ -287,7 +324,10 @@ CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_
     const auto hellos = hub.accept(kPeers, make_run_id());
     for (std::size_t i = 0; i < hellos.size(); ++i)
       logger.info("solver '", kPeers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
-    auto messages = setups(scene, scene_text, layout, options.out_dir);
+    const SolverFeatures features{.fdm_face_crossing = offers(hellos[0], "face_crossing"),
+                                  .fdm_outflow = offers(hellos[0], "boundary_outflow"),
+                                  .mpm_outflow = offers(hellos[1], "boundary_outflow")};
+    auto messages = setups(scene, scene_text, layout, features, options.out_dir);
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kPeers);
@@ -296,13 +336,13 @@ CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_
                 box_text(layout.ghost_cells));
     switch (layout.dimension) {
       case 1:
-        report = run_loop<1>(scene, layout, hub, summary, options);
+        report = run_loop<1>(scene, layout, features, hub, summary, options);
         break;
       case 2:
-        report = run_loop<2>(scene, layout, hub, summary, options);
+        report = run_loop<2>(scene, layout, features, hub, summary, options);
         break;
       default:
-        report = run_loop<3>(scene, layout, hub, summary, options);
+        report = run_loop<3>(scene, layout, features, hub, summary, options);
         break;
     }
   } catch (const std::exception& error) {

@@ -120,6 +120,7 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
                 " in a grid of " + std::to_string(n) + " cells");
   layout.ghost_nodes = nodes_of(layout.ghost_cells, layout.cells);
   layout.interface_nodes = along(nodes_of(whole, layout.cells), a, face, face + 1);
+  layout.coupling_face = along(whole, a, face, face + 1);
   return layout;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cosim/serving/protocol_error.hpp"
+#include "fdm_solver/serve/flux_quantities.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -32,17 +33,19 @@ bool CellRegion::declares(Quantity q) const {
 
 CellRegion make_cell_region(const cosim::v1::Region& region, const grid::UniformGrid& grid) {
   if (region.name().empty()) reject(region, grid, "a region needs a name");
-  if (region.kind() != cosim::v1::REGION_KIND_CELLS)
+  const bool faces = region.kind() == cosim::v1::REGION_KIND_FACES;
+  if (region.kind() != cosim::v1::REGION_KIND_CELLS && !faces)
     reject(region, grid,
            "kind " + cosim::v1::RegionKind_Name(region.kind()) +
-               " is not served; an FDM zone has REGION_KIND_CELLS only");
+               " is not served; an FDM zone has REGION_KIND_CELLS and REGION_KIND_FACES");
   if (region.flat_indices_size() > 0)
     reject(region, grid, "flat_indices are not served; give the cells as a box");
   const auto& lo = region.box().lo();
   const auto& hi = region.box().hi();
   if (lo.size() != hi.size() || lo.empty() || lo.size() > 3)
     reject(region, grid, "lo and hi must both have 1 to 3 indices");
-  CellRegion cells{region.name(), {}, {}};
+  CellRegion cells;
+  cells.name = region.name();
   for (int a = 0; a < 3; ++a) {
     const long long extent = grid.cells()[a];
     const bool given = a < lo.size();
@@ -58,12 +61,36 @@ CellRegion make_cell_region(const cosim::v1::Region& region, const grid::Uniform
     cells.box.lower[a] = static_cast<int>(l);
     cells.box.upper[a] = static_cast<int>(h);
   }
+  if (faces) {
+    const auto axis = static_cast<int>(region.face_axis());
+    if (axis > 2 || !grid.is_active(axis))
+      reject(region, grid, "face_axis " + std::to_string(axis) + " is not an active axis");
+    if (cells.box.upper[axis] - cells.box.lower[axis] != 1 || cells.box.lower[axis] == 0)
+      reject(region, grid,
+             "a FACES box spans one index [f, f + 1) along face_axis " + std::to_string(axis) +
+                 ", with 0 < f: the faces between cells f - 1 and f");
+    cells.face_axis = axis;
+  }
   for (const auto& name : region.quantities()) {
-    const auto q = find_quantity(name);
-    if (!q) reject(region, grid, "unknown quantity '" + name + "'; known: " + quantity_names());
+    if (const auto flux = find_flux_quantity(name)) {
+      if (info(*flux).on_faces != faces)
+        reject(region, grid,
+               "quantity '" + name + "' belongs to " + (faces ? "CELLS" : "FACES") + " regions");
+      cells.fluxes.push_back(*flux);
+      continue;
+    }
+    const auto q = faces ? std::nullopt : find_quantity(name);
+    if (!q)
+      reject(region, grid,
+             "unknown quantity '" + name + "'; known: " +
+                 (faces ? "crossed_mass, crossed_momentum, crossed_energy"
+                        : quantity_names() + ", outflow_mass, outflow_momentum, outflow_energy"));
     cells.quantities.push_back(*q);
   }
-  if (cells.quantities.empty())
+  if (faces && cells.fluxes.empty())
+    cells.fluxes = {FluxQuantity::crossed_mass, FluxQuantity::crossed_momentum,
+                    FluxQuantity::crossed_energy};
+  if (!faces && cells.quantities.empty() && cells.fluxes.empty())
     cells.quantities = {Quantity::rho, Quantity::momentum, Quantity::energy};
   return cells;
 }

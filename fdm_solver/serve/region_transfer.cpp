@@ -1,10 +1,12 @@
 #include "fdm_solver/serve/region_transfer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
 #include "cosim/arrays.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "fdm_solver/serve/flux_quantities.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -76,7 +78,7 @@ void apply_region(EulerSolver& solver, const CellRegion& region, cosim::v1::Appl
   }
 }
 
-std::uint64_t export_region(const EulerSolver& solver, const CellRegion& region,
+std::uint64_t export_region(EulerSolver& solver, const CellRegion& region,
                             const cosim::v1::ExportRegion& request, cosim::Message& reply) {
   const auto export_one = [&](Quantity q) {
     const std::size_t components = info(q).components;
@@ -95,14 +97,23 @@ std::uint64_t export_region(const EulerSolver& solver, const CellRegion& region,
   };
   if (request.quantities().empty()) {
     for (const Quantity q : region.quantities) export_one(q);
+    for (const FluxQuantity q : region.fluxes) export_flux(solver, region, q, reply);
   }
   for (const auto& name : request.quantities()) {
+    if (const auto flux = find_flux_quantity(name);
+        flux &&
+        std::find(region.fluxes.begin(), region.fluxes.end(), *flux) != region.fluxes.end()) {
+      export_flux(solver, region, *flux, reply);
+      continue;
+    }
     const auto q = find_quantity(name);
     if (!q || !region.declares(*q))
       reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, region, name,
              "not declared for it in Setup, so it cannot be exported");
     export_one(*q);
   }
+  // v1.1: a FACES export hands over what crossed since the last one.
+  if (region.face_axis >= 0) solver.clear_watched_crossing();
   return region.cell_count();
 }
 

@@ -21,9 +21,11 @@ void apply_region(EulerSolver& solver, const CellRegion& region, cosim::v1::Appl
                   const cosim::Message& request);
 
 /// Appends one array per asked quantity (none asked: the region's) to `reply`,
-/// each copied once from the state into its frame. Returns the cell count.
+/// each copied once from the state into its frame. Returns the cell count. An
+/// export of a FACES region clears the solver's watched crossing (v1.1: each
+/// export carries what crossed since the previous one).
 /// Throws cosim::ProtocolError{UNKNOWN_REGION} for a quantity the region does not declare.
-std::uint64_t export_region(const EulerSolver& solver, const CellRegion& region,
+std::uint64_t export_region(EulerSolver& solver, const CellRegion& region,
                             const cosim::v1::ExportRegion& request, cosim::Message& reply);
 
 }  // namespace mpfd::fdm

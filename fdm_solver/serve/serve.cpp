@@ -16,7 +16,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-cosim::v1::Hello hello() {
+cosim::v1::Hello hello(bool v1_0_only) {
   cosim::v1::Hello hello;
   hello.set_role(cosim::v1::ROLE_EULER_SOLVER);
   hello.set_software("mpfd fdm_solver");
@@ -24,6 +24,9 @@ cosim::v1::Hello hello() {
   hello.set_max_major(cosim::protocol_major);
   for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint"})
     hello.add_capabilities(capability);
+  if (!v1_0_only)  // v1.1, proto/README.md §14
+    for (const char* capability : {"face_crossing", "boundary_outflow"})
+      hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
   if (::gethostname(host, sizeof host - 1) == 0) hello.set_host(host);
@@ -94,7 +97,7 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
   cosim::TransportOptions transport;
   transport.idle_timeout = options.idle_timeout;
   cosim::Participant participant(context, options.endpoint, options.name, transport);
-  const cosim::v1::HelloAck session = participant.connect(hello());
+  const cosim::v1::HelloAck session = participant.connect(hello(options.offer_v1_0_only));
   if (session.major() != cosim::protocol_major) {
     const std::string text = "the coupler chose protocol v" + std::to_string(session.major()) +
                              "; solver '" + options.name + "' speaks v" +

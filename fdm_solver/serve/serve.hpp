@@ -13,6 +13,9 @@ struct ServeOptions {
   std::string endpoint;      ///< the coupler's ROUTER: ipc://, tcp://, inproc://
   std::string name = "fdm";  ///< routing id the coupler knows this solver by
   std::chrono::milliseconds idle_timeout{60000};  ///< longest wait for the coupler's next request
+  /// Offer only protocol v1.0's capabilities (no face_crossing, boundary_outflow):
+  /// behaves as a solver written against v1.0, for comparisons and fallback tests.
+  bool offer_v1_0_only = false;
 };
 
 /// Sends Hello, then answers Setup, Exchange, WriteOutput, Checkpoint,

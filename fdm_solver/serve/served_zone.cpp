@@ -4,6 +4,7 @@
 
 #include "common/config/scene_loader.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "fdm_solver/serve/flux_quantities.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -78,6 +79,12 @@ std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup) {
     CellRegion cells = make_cell_region(region, grid);
     if (zone->regions.contains(cells.name))
       reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, "region '" + cells.name + "' is declared twice");
+    if (cells.face_axis >= 0) {  // v1.1: the solver counts what crosses these faces
+      if (!zone->solver.watched_crossing().empty())
+        reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+               "region '" + cells.name + "': fdm_solver serves one FACES region per zone");
+      zone->solver.watch_face(cells.face_axis, cells.box.lower[cells.face_axis]);
+    }
     zone->regions.emplace(cells.name, std::move(cells));
   }
   return zone;
@@ -89,8 +96,9 @@ cosim::v1::SetupAck setup_ack(const cosim::v1::Setup& setup, const ServedZone& z
     auto& echo = *ack.add_regions();
     echo = declared;
     echo.clear_quantities();
-    for (const Quantity q : zone.regions.at(declared.name()).quantities)
-      echo.add_quantities(std::string(info(q).name));
+    const CellRegion& region = zone.regions.at(declared.name());
+    for (const Quantity q : region.quantities) echo.add_quantities(std::string(info(q).name));
+    for (const FluxQuantity q : region.fluxes) echo.add_quantities(std::string(info(q).name));
   }
   ack.set_stable_dt(zone.solver.stable_dt());
   return ack;

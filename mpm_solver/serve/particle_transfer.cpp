@@ -173,6 +173,16 @@ std::uint64_t export_particle_region(const MpmSolver& solver, const ZoneRegion& 
     if (bounds.contain(p)) members.push_back(p);
   const std::uint64_t n = members.size();
   for (const auto& name : names) {
+    if (name.starts_with("outflow_")) {  // v1.1: the zone's ledger, one row
+      const BoundaryLedger& ledger = solver.boundary_ledger();
+      if (name == "outflow_momentum")
+        cosim::add_array(reply, {region.name, name, {1, 3}, "kg*m/s"},
+                         std::vector<double>(ledger.momentum.begin(), ledger.momentum.end()));
+      else
+        cosim::add_array(reply, {region.name, name, {}, name == "outflow_mass" ? "kg" : "J"},
+                         std::vector<double>{name == "outflow_mass" ? ledger.mass : ledger.energy});
+      continue;
+    }
     if (name == "id" || name == "material") {
       if (name == "id") {
         std::vector<std::uint64_t> values(n);

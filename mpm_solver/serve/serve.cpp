@@ -24,7 +24,7 @@ cosim::v1::Hello hello() {
   hello.set_min_major(cosim::protocol_major);
   hello.set_max_major(cosim::protocol_major);
   for (const char* capability :
-       {"node_regions", "particles", "gauges", "write_output", "checkpoint"})
+       {"node_regions", "particles", "gauges", "write_output", "checkpoint", "boundary_outflow"})
     hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};

@@ -10,9 +10,9 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kNodeQuantities = {"mass", "momentum", "internal_force",
                                                              "internal_energy"};
-constexpr std::array<std::string_view, 9> kParticleQuantities = {
-    "id",       "position", "velocity",     "mass", "volume", "internal_energy",
-    "material", "stress",   "burn_fraction"};
+constexpr std::array<std::string_view, 12> kParticleQuantities = {
+    "id",       "position", "velocity",      "mass",         "volume",           "internal_energy",
+    "material", "stress",   "burn_fraction", "outflow_mass", "outflow_momentum", "outflow_energy"};
 
 template <typename Values>
 std::string index_text(const Values& values) {

@@ -34,7 +34,10 @@ struct ZoneRegion {
 /// NODES: mass, momentum (export, apply), internal_force (apply),
 /// internal_energy (export, per cell of cell_count). PARTICLES: id,
 /// position, velocity, mass, volume, internal_energy, material, stress,
-/// burn_fraction (export).
+/// burn_fraction (export); v1.1: outflow_mass, outflow_momentum [1, 3],
+/// outflow_energy, one row each: the zone's BoundaryLedger (what particles
+/// carried out through outflow and non-reflecting faces since Setup; momentum
+/// also minus the impulse of walls, those faces and fixed particle sets).
 [[nodiscard]] bool node_quantity_known(std::string_view name);
 [[nodiscard]] bool particle_quantity_known(std::string_view name);
 

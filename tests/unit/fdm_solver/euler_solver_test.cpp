@@ -61,6 +61,50 @@ TEST(EulerSolver, OpenTubeAuditBalancesWhatLeftThroughTheEnds) {
     EXPECT_NEAR((end[v] + solver.outflow()[v]) / start[v], 1.0, 1e-13) << v;
 }
 
+TEST(EulerSolver, AWatchedFaceAndTheOpenEndsAccountForEveryChangeBelowIt) {
+  // What the cells below a watched face lose is what crossed it plus what left
+  // through the lower domain face: the amounts a coupler moves (proto §14).
+  for (const int axis : {0, 1}) {
+    auto scene = sod_tube(axis, 100);
+    EulerSolver solver(scene, {});
+    constexpr int kFace = 57;  // between cells 56 and 57: the shock crosses it
+    solver.watch_face(axis, kFace);
+    const auto below = [&] {
+      Totals sum{};
+      const auto& g = solver.state().grid;
+      for (std::size_t c = 0; c < g.cell_count(); ++c)
+        if (g.cell_of_index(c)[axis] < kFace)
+          for (std::size_t v = 0; v < kVariables; ++v)
+            sum[v] += solver.state().u[v][c] * g.cell_volume();
+      return sum;
+    };
+    const Totals start = below();
+    Totals crossed{};
+    for (int n = 0; n < 300; ++n) {
+      solver.advance(solver.stable_dt());
+      for (std::size_t v = 0; v < kVariables; ++v) crossed[v] += solver.watched_crossing()[v];
+      solver.clear_watched_crossing();
+    }
+    const Totals end = below();
+    const auto& lower = solver.face_outflow(2 * axis);
+    EXPECT_GT(crossed[kDensity], 0.05 * start[kDensity]) << axis;
+    EXPECT_GT(std::abs(lower[kDensity]), 1e-3 * start[kDensity]) << axis;
+    for (const std::size_t v : {kDensity, kEnergy})
+      EXPECT_NEAR((end[v] + crossed[v] + lower[v]) / start[v], 1.0, 1e-13) << axis << " " << v;
+    Totals faces{};
+    for (int face = 0; face < 6; ++face)
+      for (std::size_t line = 0; line < solver.face_outflow(face).size() / kVariables; ++line)
+        for (std::size_t v = 0; v < kVariables; ++v)
+          faces[v] += solver.face_outflow(face)[line * kVariables + v];
+    for (std::size_t v = 0; v < kVariables; ++v)
+      EXPECT_NEAR(faces[v], solver.outflow()[v], 1e-13 * start[kEnergy]) << axis << " " << v;
+  }
+  auto scene = sod_tube(0, 100);
+  EulerSolver solver(scene, {});
+  EXPECT_THROW(solver.watch_face(0, 0), Error);  // a domain face
+  EXPECT_THROW(solver.watch_face(1, 1), Error);  // an inactive axis
+}
+
 TEST(EulerSolver, SodAlongXYZGivesTheSameProfileBitForBit) {
   std::vector<double> profiles[3];
   for (int axis = 0; axis < 3; ++axis) {
