@@ -25,10 +25,15 @@ std::uint32_t material_index(const config::Scene& scene, const std::string& name
 
 /// The v1.1 outflow_* totals of `region` (one row each).
 Totals outflow_totals(const cosim::Message& reply, std::string_view peer, std::string_view region) {
+  const auto read = [&](std::string_view name, std::size_t values) {
+    const auto view = cosim::view_array<double>(reply, region, name);
+    check_value_count(reply, peer, region, name, view.values().size(), values);
+    return view.values();
+  };
   Totals totals;
-  totals.mass = read_doubles(reply, peer, region, "outflow_mass", 1)[0];
-  totals.energy = read_doubles(reply, peer, region, "outflow_energy", 1)[0];
-  const auto momentum = read_doubles(reply, peer, region, "outflow_momentum", 3);
+  totals.mass = read("outflow_mass", 1)[0];
+  totals.energy = read("outflow_energy", 1)[0];
+  const auto momentum = read("outflow_momentum", 3);
   for (int a = 0; a < 3; ++a) totals.momentum[a] = momentum[a];
   return totals;
 }
@@ -184,11 +189,12 @@ template <int Dim>
 void CfdmpStep<Dim>::read_crossed(const cosim::Message& reply) {
   // v1.1 `coupling_face`: amounts toward +face_axis in box C order -> per face cell, into the zone.
   const std::size_t n = face_in_export_.size();
-  const auto mass = read_doubles(reply, kFdm, "coupling_face", "crossed_mass", n);
-  const auto energy = read_doubles(reply, kFdm, "coupling_face", "crossed_energy", n);
-  std::vector<Vec> momentum;
-  from_wire_vectors<Dim>(read_doubles(reply, kFdm, "coupling_face", "crossed_momentum", 3 * n),
-                         layout_, momentum);
+  auto& mass = scratch_.mass;
+  auto& energy = scratch_.energy;
+  auto& momentum = scratch_.momentum;
+  read_doubles(reply, kFdm, "coupling_face", "crossed_mass", n, mass);
+  read_doubles(reply, kFdm, "coupling_face", "crossed_energy", n, energy);
+  read_wire_vectors<Dim>(reply, kFdm, "coupling_face", "crossed_momentum", n, layout_, momentum);
   const double side = layout_.face_side;
   for (std::size_t t = 0; t < n; ++t) {
     const std::size_t e = face_in_export_[t];

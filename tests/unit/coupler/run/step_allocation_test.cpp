@@ -1,6 +1,6 @@
 // The coupler's step allocates nothing once warm (issue 5; STYLE: no heap
 // allocation inside a time step). CfdmpStep is driven through the checked-in
-// recording (data/cfdmp_small.mpfdrec, 37 steps, the shock crossing the zone
+// recording (data/cfdmp_small.mpfdrec, 41 steps, the shock crossing the zone
 // face, so deposits, injections and removals happen): every request it builds
 // must equal the recorded one bit for bit (operations, descriptors, frames),
 // and build + read, counted by this program's global operator new, must not
@@ -90,8 +90,12 @@ TEST(CoupledStep, Rebuilds_the_recorded_requests_and_allocates_nothing_once_warm
   cosim::Player player(kRecording);
   std::string scene_text;
   std::map<std::string, std::vector<cosim::Message>> sent, received;
+  std::map<std::string, std::set<std::string>> capabilities;
   while (auto record = player.next()) {
     auto& header = record->message.header;
+    if (header.has_hello())
+      for (const auto& capability : header.hello().capabilities())
+        capabilities[record->peer].insert(capability);
     if (header.has_setup() && record->peer == "fdm") scene_text = header.setup().scene_fragment();
     if (header.has_exchange()) sent[record->peer].push_back(std::move(record->message));
     if (header.has_exchange_result()) received[record->peer].push_back(std::move(record->message));
@@ -104,7 +108,12 @@ TEST(CoupledStep, Rebuilds_the_recorded_requests_and_allocates_nothing_once_warm
   const auto scene = config::parse_scene(scene_text, "cfdmp_small.yaml");
   const ZoneLayout layout = make_zone_layout(scene);
   ASSERT_EQ(layout.dimension, 1);
-  CfdmpStep<1> step(scene, layout);
+  // The features coupler run negotiates from the recorded Hellos (protocol v1.1).
+  const SolverFeatures features{.fdm_face_crossing = capabilities["fdm"].contains("face_crossing"),
+                                .fdm_outflow = capabilities["fdm"].contains("boundary_outflow"),
+                                .mpm_outflow = capabilities["mpm"].contains("boundary_outflow")};
+  ASSERT_TRUE(features.fdm_face_crossing);
+  CfdmpStep<1> step(scene, layout, features);
   cosim::Message fdm, mpm;
   std::set<std::string> seen;
   std::size_t warm_steps = 0, traffic_steps = 0;
