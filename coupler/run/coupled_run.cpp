@@ -231,8 +231,10 @@ class Loop {
     auto replies = hub_.gather(peers());
     if (!plan.mpm) replies.emplace_back();
     step_.read(plan, replies[0], replies[1]);
-    if (!plan.mpm)
+    if (!plan.mpm) {
       watch_.observe(step_.strip_pressure(), plan.advance ? plan.time + plan.dt : plan.time);
+      keep_mpm_alive();
+    }
     const auto& traffic = step_.traffic();
     injected_ += traffic.injected;
     removed_ += traffic.removed;
@@ -240,6 +242,20 @@ class Loop {
     deposited_mass_ += traffic.deposited_mass;
     discarded_ += traffic.discarded;
     return {advance_seconds(replies[0]), advance_seconds(replies[1])};
+  }
+
+  /// A sleeping MPM gets no request; a Ping every options_.keep_alive restarts its
+  /// idle wait (proto §1), so that a long quiet phase does not end it.
+  void keep_mpm_alive() {
+    if (Clock::now() - mpm_contact_ < options_.keep_alive) return;
+    cosim::Message ping;
+    ping.header.mutable_ping();
+    hub_.send("mpm", std::move(ping));
+    const auto pong = hub_.receive_from("mpm");
+    if (!pong.header.has_pong())
+      throw Error("solver 'mpm' answered Ping with '" + std::string(cosim::body_name(pong.header)) +
+                  "'");
+    mpm_contact_ = Clock::now();
   }
 
   /// Wakes the MPM zone at t (activation.hpp): an audit export of the FDM alone,
@@ -288,6 +304,7 @@ class Loop {
   ActivationWatch watch_;
   nlohmann::json audit_switch_;  ///< the zone's totals either side of the activation
   Totals switch_;                ///< particles - FDM cells of the zone at the activation
+  Clock::time_point mpm_contact_ = Clock::now();  ///< the last reply of a sleeping MPM
   cosim::Hub& hub_;
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;

@@ -19,17 +19,19 @@ namespace {
 
 // Air in a closed 1 m tube of 40 cells, FDM [0, 0.6], MPM [0.4, 1], w = 5 cells;
 // `pulse`: the first 0.25 m at 1.5e5 Pa (else 1e5 Pa everywhere), density 1.2.
-std::string tube(double threshold, bool pulse) {
-  std::string text =
-      "name: dormant_tube\ntime: {end: 1.0e-3, cfl: 0.5}\n"
-      "domain: {lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [40, 1, 1]}\n"
-      "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
-      "initial: {material: air, density: 1.2, pressure: 1.0e5}\n"
-      "boundaries: {x_lower: wall, x_upper: wall}\n"
-      "output: {interval: 5.0e-4}\nsolver: {method: cfdmp}\n"
-      "zones:\n  fdm: {lower: [0, 0, 0], upper: [0.6, 0.01, 0.01]}\n"
-      "  mpm: {lower: [0.4, 0, 0], upper: [1, 0.01, 0.01], activation_pressure: " +
-      std::to_string(threshold) + "}\n  handshake_width: 5\n";
+std::string tube(double threshold, bool pulse, double end = 1.0e-3) {
+  std::string text = "name: dormant_tube\ntime: {end: " + std::to_string(end) +
+                     ", cfl: 0.5}\n"
+                     "domain: {lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [40, 1, 1]}\n"
+                     "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+                     "initial: {material: air, density: 1.2, pressure: 1.0e5}\n"
+                     "boundaries: {x_lower: wall, x_upper: wall}\n"
+                     "output: {interval: " +
+                     std::to_string(end / 2) +
+                     "}\nsolver: {method: cfdmp}\n"
+                     "zones:\n  fdm: {lower: [0, 0, 0], upper: [0.6, 0.01, 0.01]}\n"
+                     "  mpm: {lower: [0.4, 0, 0], upper: [1, 0.01, 0.01], activation_pressure: " +
+                     std::to_string(threshold) + "}\n  handshake_width: 5\n";
   if (pulse)
     text +=
         "bodies:\n  - {name: pulse, material: air, density: 1.2, pressure: 1.5e5,\n"
@@ -54,7 +56,8 @@ struct Run {
   CoupledRunReport report;
 };
 
-Run run(const std::string& text, testing::StillMpm& mpm, const std::string& name) {
+Run run(const std::string& text, testing::StillMpm& mpm, const std::string& name,
+        std::chrono::milliseconds keep_alive = std::chrono::milliseconds(1000)) {
   mpm.cell_volume = 0.025 * 0.01 * 0.01;
   g_mpm = &mpm;
   zmq::context_t context;
@@ -70,6 +73,7 @@ Run run(const std::string& text, testing::StillMpm& mpm, const std::string& name
   CoupledRunOptions options;
   options.out_dir = result.out;
   options.progress = false;
+  options.keep_alive = keep_alive;
   result.report = run_cfdmp(scene, text, hub, solvers, options);
   std::ifstream in(result.out / "summary.json");
   result.summary = nlohmann::json::parse(in);
@@ -90,6 +94,16 @@ TEST(Dormant, A_zone_that_never_wakes_gets_no_message_after_setup) {
   EXPECT_EQ(r.report.energy_error, 0.0);
   EXPECT_NEAR(r.summary["details"]["zones"]["mpm"]["mass"].get<double>(), 24 * 1.2 * 2.5e-6, 1e-15);
   EXPECT_FALSE(std::filesystem::exists(r.out / "mpm" / "snapshots"));
+}
+
+TEST(Dormant, Pings_keep_a_sleeping_solver_past_its_idle_timeout) {
+  testing::StillMpm mpm;
+  mpm.idle_timeout_ms = 250;
+  // ~27000 FDM-only steps of 73 us: 0.7 ... 2 s of wall time, no request to the MPM.
+  const auto r = run(tube(2.0e5, false, 2.0), mpm, "long", std::chrono::milliseconds(50));
+  EXPECT_GT(r.report.wall_seconds, 0.5);
+  EXPECT_EQ(mpm.requests_after_setup.load(), 0);
+  EXPECT_TRUE(mpm.shut_down.load());  // still serving at the end (without the Pings: not)
 }
 
 TEST(Dormant, While_asleep_the_fdm_cells_of_the_zone_keep_their_state_until_the_wave_comes) {

@@ -27,6 +27,8 @@ struct StillMpm {
   std::atomic<double> injected_mass{0};
   std::atomic<int> requests_after_setup{0};  ///< every request but Setup and Shutdown
   std::atomic<double> activated_at{-1};      ///< sim_time of the Activate [s]; -1: none
+  int idle_timeout_ms = 10000;               ///< how long it waits for a request
+  std::atomic<bool> shut_down{false};        ///< it got Shutdown (was still serving)
 };
 
 inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_by,
@@ -41,7 +43,7 @@ inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_
 inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint, StillMpm& mpm) {
   namespace v1 = cosim::v1;
   cosim::TransportOptions transport;
-  transport.idle_timeout = std::chrono::milliseconds(10000);
+  transport.idle_timeout = std::chrono::milliseconds(mpm.idle_timeout_ms);
   cosim::Participant participant(context, endpoint, "mpm", transport);
   v1::Hello hello;
   hello.set_role(v1::ROLE_MPM_SOLVER);
@@ -56,6 +58,7 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
     cosim::Message reply;
     const auto& header = request.header;
     if (header.has_shutdown()) {
+      mpm.shut_down = true;
       reply.header.mutable_shutdown_ack();
       participant.reply(request, std::move(reply));
       return;
