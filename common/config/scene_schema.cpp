@@ -49,7 +49,7 @@ std::shared_ptr<const Table<Zones>> zones_table() {
       .required("upper", &MpmZone::upper, kPoint, "highest corner, on a grid line")
       .optional("activation_pressure", &MpmZone::activation_pressure,
                 Number("Pa", Range::at_least(0)),
-                "the FSI zone stays dormant (no MPM work, no messages) until the absolute "
+                "the FSI zone stays dormant (no MPM work, no requests) until the absolute "
                 "pressure of an FDM cell next to its coupling face (the strip cells, T §4.3) "
                 "exceeds this; at or below the ambient pressure there it wakes at t = 0; "
                 "absent: active from the start (docs/coupler.md)")

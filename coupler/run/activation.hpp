@@ -10,10 +10,10 @@
 // pressure itself; scene value in Pa): a threshold at or below the ambient
 // pressure on the strip wakes the zone at t = 0.
 //
-// While dormant the MPM gets no message after Setup (Zone.dormant, proto §5);
-// the FDM advances alone over the scene's whole grid with its own dt. The
-// zone wakes at the start of the step after the one whose strip export passed
-// the threshold: Activate, then the step-0 exchange (discard, export, propose).
+// While dormant the MPM gets no request after Setup, only a keep-alive Ping a
+// second (Zone.dormant, proto §5); the FDM advances alone over the scene's whole
+// grid with its own dt. The zone wakes at the start of the step after the one whose strip export
+// passed the threshold: Activate, then the step-0 exchange (discard, export, propose).
 //
 // Audit: while the zone sleeps it counts the FDM's cells of the FDM zone and of the
 // MPM zone (the whole domain when the zones cover it), so it is exact as long as
@@ -35,7 +35,7 @@ class ActivationWatch {
   /// `threshold` [Pa]: zones.mpm.activation_pressure; absent: active from the start.
   explicit ActivationWatch(std::optional<double> threshold);
 
-  /// The MPM zone sleeps (no message to the MPM solver).
+  /// The MPM zone sleeps (no request to the MPM solver).
   [[nodiscard]] bool dormant() const { return dormant_; }
   /// Reads the FDM's strip_cells pressure at `time` [s] while dormant.
   void observe(const std::vector<double>& strip_pressure, double time);
