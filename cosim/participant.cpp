@@ -49,7 +49,7 @@ Message Participant::receive() {
 
 Message Participant::receive_within(std::chrono::milliseconds timeout,
                                     std::string_view waiting_for) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  auto deadline = std::chrono::steady_clock::now() + timeout;
   while (true) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
@@ -81,6 +81,7 @@ Message Participant::receive_within(std::chrono::milliseconds timeout,
       Message pong;
       pong.header.mutable_pong();
       reply(message, std::move(pong));
+      deadline = std::chrono::steady_clock::now() + timeout;  // the coupler is alive
       continue;
     }
     return message;

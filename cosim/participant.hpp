@@ -25,9 +25,10 @@ class Participant {
   /// rejects the version or does not answer within reply_timeout.
   v1::HelloAck connect(v1::Hello hello);
 
-  /// The coupler's next request, waiting at most idle_timeout. Ping is answered
-  /// here and never returned. A malformed request is reported to the coupler
-  /// and thrown.
+  /// The coupler's next request, waiting at most idle_timeout since the last
+  /// message. Ping is answered here and never returned (it restarts the wait: a
+  /// coupler keeps a dormant zone's solver alive with it). A malformed request is
+  /// reported to the coupler and thrown.
   Message receive();
 
   /// Answers `request`: copies its step and time, sets in_reply_to.

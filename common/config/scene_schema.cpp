@@ -49,8 +49,10 @@ std::shared_ptr<const Table<Zones>> zones_table() {
       .required("upper", &MpmZone::upper, kPoint, "highest corner, on a grid line")
       .optional("activation_pressure", &MpmZone::activation_pressure,
                 Number("Pa", Range::at_least(0)),
-                "the zone stays dormant until the pressure at its boundary exceeds this; absent: "
-                "active from the start")
+                "the FSI zone stays dormant (no MPM work, no requests) until the absolute "
+                "pressure of an FDM cell next to its coupling face (the strip cells, T §4.3) "
+                "exceeds this; at or below the ambient pressure there it wakes at t = 0; "
+                "absent: active from the start (docs/coupler.md)")
       .rule("upper > lower on every axis",
             [](const MpmZone& z, const Cursor& c) { check_box(z.lower, z.upper, c); });
   auto t = table<Zones>("zones",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/core/error.hpp"
 #include "coupler/handshake/particle_removal.hpp"
@@ -118,9 +119,11 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   if (flux_due_) add_face_fluxes(returned);
   add_deposit(fdm);
   if (plan.advance) {
-    add_ghost_cells(fdm);
+    if (plan.mpm) add_ghost_cells(fdm);
     add_advance(fdm, plan.dt, plan.time);
     fdm_ops_.push_back(Op::advance);
+  }
+  if (plan.advance && plan.mpm) {
     add_injection(mpm);
     add_interface_nodes(mpm);
     add_advance(mpm, plan.dt, plan.time);
@@ -140,8 +143,13 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
       add_export(fdm, "fdm_owned", {"rho", "momentum", "E"});
     fdm_ops_.push_back(Op::export_owned);
   }
+  if (!plan.mpm && plan.audit) {
+    add_export(fdm, "dormant_zone", {"rho", "momentum", "E"});
+    fdm_ops_.push_back(Op::export_dormant);
+  }
   add_propose_dt(fdm);
   fdm_ops_.push_back(Op::propose);
+  if (!plan.mpm) return;
 
   if (!have_ghost_source_) {
     // Step 0: the MPM filled the scene's bodies over the whole domain; what lies
@@ -329,15 +337,16 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
 }
 
 template <int Dim>
-Totals CfdmpStep<Dim>::cell_totals(const cosim::Message& reply, std::size_t count) const {
-  const auto rho_view = cosim::view_array<double>(reply, "fdm_owned", "rho");
-  const auto momentum_view = cosim::view_array<double>(reply, "fdm_owned", "momentum");
-  const auto energy_view = cosim::view_array<double>(reply, "fdm_owned", "E");
+Totals CfdmpStep<Dim>::cell_totals(const cosim::Message& reply, const char* region,
+                                   std::size_t count) const {
+  const auto rho_view = cosim::view_array<double>(reply, region, "rho");
+  const auto momentum_view = cosim::view_array<double>(reply, region, "momentum");
+  const auto energy_view = cosim::view_array<double>(reply, region, "E");
   const auto rho = rho_view.values(), momentum = momentum_view.values(),
              energy = energy_view.values();
-  check_value_count(reply, kFdm, "fdm_owned", "rho", rho.size(), count);
-  check_value_count(reply, kFdm, "fdm_owned", "momentum", momentum.size(), 3 * count);
-  check_value_count(reply, kFdm, "fdm_owned", "E", energy.size(), count);
+  check_value_count(reply, kFdm, region, "rho", rho.size(), count);
+  check_value_count(reply, kFdm, region, "momentum", momentum.size(), 3 * count);
+  check_value_count(reply, kFdm, region, "E", energy.size(), count);
   Totals totals;
   const double v = geometry_.cell_volume;
   for (std::size_t i = 0; i < count; ++i) {
@@ -355,7 +364,8 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
     if (fdm_ops_[i] == Op::export_strip) {
       if (plan.advance) {
         std::swap(strip_prev_, strip_now_);
-        flux_due_ = true;
+        // No face flux while the zone sleeps: the face is an inner face of the FDM then.
+        flux_due_ = plan.mpm;
         dt_last_ = plan.dt;
       }
       const std::size_t n = strip_layout_.box.count();
@@ -380,8 +390,12 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
     } else if (fdm_ops_[i] == Op::export_face) {
       read_crossed(reply);
     } else if (fdm_ops_[i] == Op::export_owned) {
-      fdm_totals_ = cell_totals(reply, static_cast<std::size_t>(layout_.fdm_owned.count()));
+      fdm_totals_ =
+          cell_totals(reply, "fdm_owned", static_cast<std::size_t>(layout_.fdm_owned.count()));
       if (features_.fdm_outflow) fdm_outflow_ = outflow_totals(reply, kFdm, "fdm_owned");
+    } else if (fdm_ops_[i] == Op::export_dormant) {
+      mpm_totals_ =
+          cell_totals(reply, "dormant_zone", static_cast<std::size_t>(layout_.mpm_zone.count()));
     } else if (fdm_ops_[i] == Op::propose) {
       fdm_dt_ = result.proposed().stable_dt();
     }
@@ -452,7 +466,10 @@ template <int Dim>
 void CfdmpStep<Dim>::read(const StepPlan& plan, const cosim::Message& fdm,
                           const cosim::Message& mpm) {
   read_fdm(plan, fdm);
-  read_mpm(mpm);
+  if (plan.mpm)
+    read_mpm(mpm);
+  else  // a dormant zone proposes nothing: the FDM advances with its own dt
+    mpm_dt_ = std::numeric_limits<double>::infinity();
   if (!(stable_dt() > 0.0) || !std::isfinite(stable_dt()))
     throw Error("step at t = " + std::to_string(plan.time) + " s: stable dt proposals fdm " +
                 std::to_string(fdm_dt_) + " s, mpm " + std::to_string(mpm_dt_) +

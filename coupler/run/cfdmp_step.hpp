@@ -8,7 +8,9 @@
 //   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
 //         remove "crossed" (left mpm_zone), (export mpm_zone), propose_dt]
 // A step without advance (step 0, and the one before each output) keeps only the
-// applies of deposits, the exports and the proposals.
+// applies of deposits, the exports and the proposals. While the MPM zone is
+// dormant (coupler/run/activation.hpp) only the FDM gets a request: advance,
+// export strip_cells, (export fdm_owned and dormant_zone), propose_dt.
 
 #include <array>
 #include <cstdint>
@@ -44,6 +46,7 @@ struct StepPlan {
   double dt = 0;         ///< Δt^n [s]
   double time = 0;       ///< t^n [s]
   bool audit = false;    ///< export the zones' contents for the conservation audit
+  bool mpm = true;       ///< false: the MPM zone is dormant, only the FDM gets a request
 };
 
 /// What one step moved across the face (for the audit and the log).
@@ -68,7 +71,10 @@ class CfdmpStep {
   /// min of the two solvers' last proposals [s].
   [[nodiscard]] double stable_dt() const { return std::min(fdm_dt_, mpm_dt_); }
   [[nodiscard]] const char* limited_by() const { return fdm_dt_ <= mpm_dt_ ? "fdm" : "mpm"; }
-  /// The audit exports of the last audited step: FDM zone outside the MPM zone, MPM particles.
+  /// The FDM's pressure on strip_cells at the last export [Pa] (the activation watch).
+  [[nodiscard]] const std::vector<double>& strip_pressure() const { return strip_now_.pressure; }
+  /// The audit exports of the last audited step: FDM zone outside the MPM zone, MPM particles
+  /// (while the zone is dormant: the FDM's cells of the MPM zone, see activation.hpp).
   [[nodiscard]] const Totals& fdm_totals() const { return fdm_totals_; }
   [[nodiscard]] const Totals& mpm_totals() const { return mpm_totals_; }
   /// What waits in the face parcels (neither solver holds it).
@@ -93,6 +99,7 @@ class CfdmpStep {
     discard,
     remove,
     export_particles,
+    export_dormant,
     propose
   };
 
@@ -107,7 +114,8 @@ class CfdmpStep {
   void add_interface_nodes(cosim::Message& mpm);
   void read_fdm(const StepPlan& plan, const cosim::Message& reply);
   void read_mpm(const cosim::Message& reply);
-  [[nodiscard]] Totals cell_totals(const cosim::Message& reply, std::size_t count) const;
+  [[nodiscard]] Totals cell_totals(const cosim::Message& reply, const char* region,
+                                   std::size_t count) const;
   void read_crossed(const cosim::Message& reply);
   void add_face_fluxes(const handshake::Amounts<Dim>& returned);
 

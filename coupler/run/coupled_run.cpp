@@ -12,6 +12,7 @@
 #include "common/core/progress.hpp"
 #include "common/io/run_summary.hpp"
 #include "cosim/recorder.hpp"
+#include "coupler/run/activation.hpp"
 #include "coupler/run/cfdmp_step.hpp"
 #include "coupler/run/wire.hpp"
 
@@ -20,6 +21,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 const std::vector<std::string> kPeers = {"fdm", "mpm"};
+const std::vector<std::string> kFdmOnly = {"fdm"};
+const std::vector<std::string> kMpmOnly = {"mpm"};
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -75,11 +78,16 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
                        {"crossed_mass", "crossed_momentum", "crossed_energy"});
     face.set_face_axis(static_cast<std::uint32_t>(layout.face_axis));
   }
+  const bool dormant = scene.zones->mpm->activation_pressure.has_value();
+  if (dormant)  // the audit's stand-in for the sleeping MPM zone (activation.hpp)
+    *fdm.add_regions() =
+        make_region("dormant_zone", cells, layout.mpm_zone, {"rho", "momentum", "E"});
   fdm.set_output_dir((out / "fdm").string());
 
   auto& mpm = *messages[1].header.mutable_setup();
   mpm.mutable_zone()->set_name("mpm");
   mpm.mutable_zone()->set_kind(v1::ZONE_KIND_MPM);
+  mpm.mutable_zone()->set_dormant(dormant);
   *mpm.mutable_zone()->mutable_grid() = wire_grid(scene);
   mpm.set_scene_fragment(text);
   *mpm.add_regions() = make_region("ghost_nodes", v1::REGION_KIND_NODES, layout.ghost_nodes,
@@ -141,6 +149,7 @@ class Loop {
        cosim::Hub& hub, io::RunSummary& summary, const CoupledRunOptions& options)
       : scene_(scene),
         step_(scene, layout, features),
+        watch_(scene.zones->mpm->activation_pressure),
         hub_(hub),
         summary_(summary),
         options_(options) {}
@@ -149,6 +158,7 @@ class Loop {
     const auto start = Clock::now();
     exchange({.advance = false, .audit = true});
     initial_ = current();
+    if (watch_.due()) activate(0, 0);
     write_output(0);
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
     const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
@@ -160,6 +170,7 @@ class Loop {
         throw Error("scene '" + scene_.name +
                     "': time.max_steps = " + std::to_string(scene_.time.max_steps) +
                     " reached at t = " + std::to_string(t) + " s");
+      if (watch_.due()) activate(t, n);
       const double next_output = std::min(scene_.time.end, outputs * interval);
       double dt = step_.stable_dt();
       bool output_now = false;
@@ -210,6 +221,9 @@ class Loop {
     summary_.set_detail("protocol", {{"fdm_face_crossing", features.fdm_face_crossing},
                                      {"fdm_outflow", features.fdm_outflow},
                                      {"mpm_outflow", features.mpm_outflow}});
+    nlohmann::json activation = watch_.summary();
+    if (!audit_switch_.is_null()) activation["audit_switch"] = audit_switch_;
+    summary_.set_detail("activation", activation);
     summary_.set_detail("crossing", {{"injected_particles", injected_},
                                      {"removed_particles", removed_},
                                      {"injected_mass_kg", injected_mass_},
@@ -227,18 +241,33 @@ class Loop {
 
  private:
   [[nodiscard]] Totals current() const {
-    return sum({step_.fdm_totals(), step_.mpm_totals(), step_.parcel_totals()});
+    Totals now = sum({step_.fdm_totals(), step_.mpm_totals(), step_.parcel_totals()});
+    now.mass -= switch_.mass;
+    now.energy -= switch_.energy;
+    for (int a = 0; a < 3; ++a) now.momentum[a] -= switch_.momentum[a];
+    return now;
   }
 
-  /// One Exchange per solver, sent together; returns the two advance wall times.
-  std::pair<double, double> exchange(const StepPlan& plan) {
+  /// The solvers that get messages: the FDM alone while the MPM zone sleeps.
+  [[nodiscard]] const std::vector<std::string>& peers() const {
+    return watch_.dormant() ? kFdmOnly : kPeers;
+  }
+
+  /// One Exchange per awake solver, sent together; returns the two advance wall times.
+  std::pair<double, double> exchange(StepPlan plan) {
+    plan.mpm = !watch_.dormant();
     clear_for_reuse(fdm_request_);
     clear_for_reuse(mpm_request_);
     step_.build(plan, fdm_request_, mpm_request_);
     hub_.send_keeping_header("fdm", fdm_request_);
-    hub_.send_keeping_header("mpm", mpm_request_);
-    const auto replies = hub_.gather(kPeers);
+    if (plan.mpm) hub_.send_keeping_header("mpm", mpm_request_);
+    auto replies = hub_.gather(peers());
+    if (!plan.mpm) replies.emplace_back();
     step_.read(plan, replies[0], replies[1]);
+    if (!plan.mpm) {
+      watch_.observe(step_.strip_pressure(), plan.advance ? plan.time + plan.dt : plan.time);
+      keep_mpm_alive();
+    }
     const auto& traffic = step_.traffic();
     injected_ += traffic.injected;
     removed_ += traffic.removed;
@@ -248,19 +277,68 @@ class Loop {
     return {advance_seconds(replies[0]), advance_seconds(replies[1])};
   }
 
+  /// A sleeping MPM gets no request; a Ping every options_.keep_alive restarts its
+  /// idle wait (proto §1), so that a long quiet phase does not end it.
+  void keep_mpm_alive() {
+    if (Clock::now() - mpm_contact_ < options_.keep_alive) return;
+    cosim::Message ping;
+    ping.header.mutable_ping();
+    hub_.send("mpm", std::move(ping));
+    const auto pong = hub_.receive_from("mpm");
+    if (!pong.header.has_pong())
+      throw Error("solver 'mpm' answered Ping with '" + std::string(cosim::body_name(pong.header)) +
+                  "'");
+    mpm_contact_ = Clock::now();
+  }
+
+  /// Wakes the MPM zone at t (activation.hpp): an audit export of the FDM alone,
+  /// Activate, then the step-0 exchange (discard outside the zone, export, propose
+  /// dt) with both solvers.
+  void activate(double t, std::int64_t n) {
+    hub_.set_clock(static_cast<std::uint64_t>(n), t);
+    exchange({.advance = false, .time = t, .audit = true});  // the FDM's zone cells at t
+    const Totals cells = step_.mpm_totals();
+    cosim::Message message;
+    message.header.mutable_activate()->set_reason(
+        "strip pressure passed zones.mpm.activation_pressure");
+    hub_.send("mpm", std::move(message));
+    hub_.gather(kMpmOnly);
+    watch_.activated(t, n);
+    exchange({.advance = false, .time = t, .audit = true});
+    const Totals& particles = step_.mpm_totals();
+    // The zone's content changes hands: the FDM's cells there give way to the MPM's
+    // particles (the scene's initial state). The difference is what the FDM carried
+    // across the face while the zone slept; it is reported here and kept out of the
+    // audit's error, which stays continuous across the switch (activation.hpp).
+    switch_.mass = particles.mass - cells.mass;
+    switch_.energy = particles.energy - cells.energy;
+    for (int a = 0; a < 3; ++a) switch_.momentum[a] = particles.momentum[a] - cells.momentum[a];
+    audit_switch_ = {{"fdm_cells", totals_json(cells)},
+                     {"particles", totals_json(particles)},
+                     {"relative_mass_change", switch_.mass / initial_.mass},
+                     {"relative_energy_change", switch_.energy / initial_.energy}};
+    Logger("coupler").info(watch_.activation_text(), "; MPM zone mass ", particles.mass,
+                           " kg replaces the FDM's ", cells.mass, " kg there (",
+                           switch_.mass / initial_.mass, " of the total)");
+  }
+
   void write_output(int index) {
-    for (const auto& peer : kPeers) {
+    for (const auto& peer : peers()) {
       cosim::Message message;
       auto& body = *message.header.mutable_write_output();
       body.set_basename(peer + "_" + std::to_string(index));
       hub_.send(peer, std::move(message));
     }
-    hub_.gather(kPeers);
+    hub_.gather(peers());
   }
 
   const config::Scene& scene_;
   CfdmpStep<Dim> step_;
   cosim::Message fdm_request_, mpm_request_;  ///< kept: a step reuses their memory
+  ActivationWatch watch_;
+  nlohmann::json audit_switch_;  ///< the zone's totals either side of the activation
+  Totals switch_;                ///< particles - FDM cells of the zone at the activation
+  Clock::time_point mpm_contact_ = Clock::now();  ///< the last reply of a sleeping MPM
   cosim::Hub& hub_;
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;

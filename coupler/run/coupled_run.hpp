@@ -9,6 +9,7 @@
 // Shutdown. On any failure it names the solver, shuts the other down, keeps
 // what was written, writes summary.json with status "failed" and throws.
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -26,6 +27,8 @@ struct CoupledRunOptions {
   std::filesystem::path out_dir;
   std::optional<std::filesystem::path> record;  ///< write every message here (proto §10)
   bool progress = true;                         ///< progress line on a terminal
+  /// Wall time between Pings to a sleeping MPM zone's solver (well inside its idle timeout).
+  std::chrono::milliseconds keep_alive{1000};
 };
 
 /// What the run measured (also in summary.json).

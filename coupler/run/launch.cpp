@@ -74,10 +74,6 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
   const std::string text = read_text(scene_file);
   const config::Scene scene = config::parse_scene(text, scene_file.string());
   (void)make_zone_layout(scene);  // refuse a scene the coupler cannot drive before anything starts
-  if (scene.zones->mpm->activation_pressure)
-    throw Error("scene '" + scene.name +
-                "': zones.mpm.activation_pressure (a dormant FSI zone) is not supported by "
-                "coupler run yet; remove it to couple from the start");
   if (launch.mode == LaunchMode::external &&
       (!launch.endpoints.contains("fdm") || !launch.endpoints.contains("mpm")))
     throw Error("external solvers need --endpoints fdm=URL,mpm=URL");

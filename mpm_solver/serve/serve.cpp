@@ -67,6 +67,8 @@ cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& r
               " particles, ", zone->regions.size(), " regions, stable dt ",
               reply.header.setup_ack().stable_dt(), " s", zone->dormant ? ", dormant" : "");
   } else if (header.has_activate()) {
+    // A dormant zone did not advance: its clock starts at the Activate's t^n (proto §5).
+    if (zone->dormant) zone->start_time = header.envelope().sim_time() - zone->solver.time();
     zone->dormant = false;
     reply.header.mutable_activate_ack()->set_stable_dt(zone->solver.stable_dt());
   } else if (header.has_exchange()) {

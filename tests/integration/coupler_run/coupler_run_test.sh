@@ -83,4 +83,19 @@ grep -q "solver 'mpm'.*killed by signal 9" "$work/kill.log" || fail "kill: $(tai
 [ "$(status_of "$work/kill")" = failed ] || fail "kill: summary not failed"
 [ -e "$work/kill/fdm/snapshots/snapshot_000001.h5" ] || fail "kill: FDM output lost"
 grep -q "shut down" "$work/kill/fdm_solver.log" || fail "kill: FDM not shut down: $(tail -1 "$work/kill/fdm_solver.log")"
+# 7. a dormant FSI zone (activation_pressure 0.2 Pa: the shock wakes it) over ipc: the
+#    mpm_solver process wakes once, at the switch time, and the recording replays
+sed 's/upper: \[1, 0.01, 0.01\]}$/upper: [1, 0.01, 0.01], activation_pressure: 0.2}/' "$scene" \
+  > "$work/dormant.yaml"
+grep -q "activation_pressure: 0.2" "$work/dormant.yaml" || fail "dormant: scene not edited"
+"$coupler" run "$work/dormant.yaml" --out "$work/dormant" --processes --record "$work/dormant.mpfdrec" \
+  2> "$work/dormant.log" || fail "dormant run: $(tail -1 "$work/dormant.log")"
+[ "$(status_of "$work/dormant")" = completed ] || fail "dormant run: summary not completed"
+[ "$(grep -c "FSI zone activated at t = 0.05" "$work/dormant.log")" = 1 ] \
+  || fail "dormant run: no single activation line near 0.057 s"
+grep -q '"activated": true' "$work/dormant/summary.json" || fail "dormant run: summary not activated"
+for solver in fdm mpm; do
+  "$coupler" replay "$work/dormant.mpfdrec" --solver $solver > /dev/null 2>&1 \
+    || fail "dormant run: replay of $solver differs"
+done
 echo "PASS"

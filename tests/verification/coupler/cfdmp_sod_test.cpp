@@ -263,5 +263,140 @@ TEST(CfdmpSod, Fast_open_ends_audit_counts_the_outflow) {
   EXPECT_LT(std::abs(energy), 5e-3);
 }
 
+/// configs/cfdmp_sod_1d.yaml with zones.mpm.activation_pressure = `threshold` (Pa, read as SI).
+std::filesystem::path dormant_scene(const std::string& name, double threshold) {
+  std::ifstream in(kScene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string mpm_zone = "upper: [1, 0.01, 0.01]}";
+  const auto at = yaml.find(mpm_zone, yaml.find("mpm: {lower: [0.6"));
+  yaml.replace(at, mpm_zone.size(),
+               "upper: [1, 0.01, 0.01], activation_pressure: " + std::to_string(threshold) + "}");
+  const auto file = temp_dir(name + ".yaml");
+  std::ofstream(file) << yaml;
+  return file;
+}
+
+/// The cells of snapshot `index` of `dir`, all of them.
+std::vector<double> all_cells(const std::filesystem::path& dir, int index, const char* field) {
+  char name[32];
+  std::snprintf(name, sizeof name, "snapshot_%06d.h5", index);
+  const io::Hdf5File file(dir / "snapshots" / name, io::Hdf5File::Mode::read);
+  return file.read_dataset(std::string("/cells/") + field).values;
+}
+
+// (a) The zone never wakes (max pressure 1 Pa < 10 Pa): the FDM ran alone over the
+// whole grid, so its snapshots are the pure FDM run's but for the step sizes before
+// each output (the standalone loop halves the last two steps, the coupler cuts the
+// last one: measured 6.4e-5 max relative difference), and the MPM wrote nothing.
+TEST(CfdmpSod, Fast_a_zone_that_never_wakes_leaves_a_pure_fdm_run) {
+  const auto scene_file = dormant_scene("never", 10.0);
+  const auto coupled = temp_dir("never");
+  const auto summary = run_coupled(scene_file, coupled);
+  EXPECT_EQ(summary["details"]["activation"]["activated"], false);
+  EXPECT_TRUE(summary["details"]["activation"]["time_s"].is_null());
+  EXPECT_FALSE(std::filesystem::exists(coupled / "mpm" / "snapshots"));
+
+  auto scene = config::load_scene(kScene);
+  scene.zones.reset();
+  scene.solver.method = config::Method::fdm;
+  const auto pure = temp_dir("never-fdm");
+  fdm::run_standalone(scene, {.scene_file = kScene, .out_dir = pure});
+  double worst = 0;
+  for (const char* field : {"density", "pressure"}) {
+    const auto a = all_cells(coupled / "fdm", 10, field);
+    const auto b = all_cells(pure, 10, field);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      worst = std::max(worst, std::abs(a[i] - b[i]) / std::abs(b[i]));
+  }
+  std::printf("never woken: max relative difference to pure FDM at t = 0.2 s: %.3e\n", worst);
+  EXPECT_LT(worst, 5e-4);
+  // The audit of a sleeping zone counts the FDM's cells of the whole closed box.
+  const double mass = summary["conservation"]["mass"]["relative_error"];
+  std::printf("never woken: audit mass error %.3e\n", mass);
+  EXPECT_LT(std::abs(mass), 1e-14);
+}
+
+// (b) The shock wakes the zone (threshold 0.2 Pa, between p = 0.1 ahead of the shock
+// and p* = 0.303 behind it): the switch comes within one step of the time the FDM's
+// pressure at the outer strip cell (centre x = 0.595) passes the threshold, read from
+// a gauge of a pure FDM run; the errors at t = 0.2 s stay close to the always-on run.
+TEST(CfdmpSod, Fast_b_the_shock_wakes_the_zone_and_the_errors_stay_close) {
+  constexpr double kThreshold = 0.2;
+  const auto dormant = temp_dir("woken");
+  const auto summary = run_coupled(dormant_scene("woken", kThreshold), dormant);
+  const auto& activation = summary["details"]["activation"];
+  ASSERT_EQ(activation["activated"], true);
+  const double t_on = activation["time_s"];
+
+  auto scene = config::load_scene(kScene);
+  scene.zones.reset();
+  scene.solver.method = config::Method::fdm;
+  scene.gauges.push_back({"face", {0.595, 0.005, 0.005}});
+  const auto pure = temp_dir("woken-fdm");
+  fdm::run_standalone(scene, {.scene_file = kScene, .out_dir = pure});
+  std::ifstream gauges(pure / "gauges.csv");
+  std::string line;
+  std::getline(gauges, line);
+  std::size_t column = 0;  // of face.pressure in docs/output.md's gauges.csv
+  for (std::stringstream names(line);
+       std::getline(names, line, ',') && line.rfind("face.pressure", 0) == std::string::npos;)
+    ++column;
+  double t_fdm = -1, t_before = 0, dt = 0;
+  while (std::getline(gauges, line) && t_fdm < 0) {
+    std::vector<double> row;
+    std::stringstream fields(line);
+    for (std::string v; std::getline(fields, v, ',');) row.push_back(std::stod(v));
+    if (row.at(column) > kThreshold) {
+      t_fdm = row[0];
+      dt = row[0] - t_before;
+    }
+    t_before = row[0];
+  }
+  ASSERT_GT(t_fdm, 0);
+  double t_exact = 0.05;  // the exact shock passes x = 0.595
+  while (exact().sample((0.595 - 0.5) / t_exact).pressure < kThreshold) t_exact += 1e-6;
+  std::printf(
+      "woken at t = %.5f s; FDM gauge at the face passes %.1f Pa at %.5f s (step %.2e s); "
+      "exact shock there at %.5f s\n",
+      t_on, kThreshold, t_fdm, dt, t_exact);
+  EXPECT_LE(std::abs(t_on - t_fdm), 1.01 * dt);
+
+  const auto always = temp_dir("always");
+  run_coupled(kScene, always);
+  const int last = 10;
+  const double fdm_dormant = mean_density_error(fdm_cells(dormant / "fdm", last, kFace));
+  const double fdm_always = mean_density_error(fdm_cells(always / "fdm", last, kFace));
+  // The MPM's snapshots start at its first output after the switch; each holds
+  // the coupled time: the outputs 0.06, 0.08, ..., 0.2 s.
+  int mpm_last = -1;
+  for (int i = 0;; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "snapshot_%06d.h5", i);
+    if (!std::filesystem::exists(dormant / "mpm" / "snapshots" / name)) break;
+    const io::Hdf5File file(dormant / "mpm" / "snapshots" / name, io::Hdf5File::Mode::read);
+    const double t = file.read_attribute("/", "time");
+    EXPECT_GT(t, t_on);
+    EXPECT_NEAR(t, 0.02 * std::ceil(t_on / 0.02 - 1e-9) + 0.02 * i, 1e-12) << name;
+    mpm_last = i;
+  }
+  ASSERT_GE(mpm_last, 0);
+  const double mpm_dormant = mean_density_error(mpm_particles(dormant / "mpm", mpm_last, kFace));
+  const double mpm_always = mean_density_error(mpm_particles(always / "mpm", last, kFace));
+  std::printf("FDM part mean |rho err|: woken %.4e, always on %.4e\n", fdm_dormant, fdm_always);
+  std::printf("MPM part mean |rho err|: woken %.4e, always on %.4e\n", mpm_dormant, mpm_always);
+  std::printf(
+      "woken: audit mass error %.3e, energy error %.3e; the switch replaced the "
+      "FDM's zone cells by particles with %.3e of the mass, %.3e of the energy\n",
+      summary["conservation"]["mass"]["relative_error"].get<double>(),
+      summary["conservation"]["energy"]["relative_error"].get<double>(),
+      activation["audit_switch"]["relative_mass_change"].get<double>(),
+      activation["audit_switch"]["relative_energy_change"].get<double>());
+  EXPECT_LT(fdm_dormant, 1.05 * fdm_always);
+  EXPECT_LT(mpm_dormant, 1.1 * mpm_always);
+}
+
 }  // namespace
 }  // namespace mpfd::coupler

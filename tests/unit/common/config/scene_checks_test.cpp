@@ -162,6 +162,16 @@ TEST(SceneChecks, Thesis_V6_zones_are_accepted) {
   EXPECT_EQ(s.zones->handshake_width, 5);
 }
 
+TEST(SceneChecks, A_bad_activation_pressure_is_refused) {
+  for (const std::string bad : {"-1.0", ".nan", ".inf", "high", "[2.0e5]"}) {
+    std::string zones = kV6Zones;
+    zones.replace(zones.find("2.0e5"), 5, bad);
+    const auto errors = errors_of(cfdmp(zones));
+    ASSERT_EQ(errors.size(), 1U) << bad;
+    EXPECT_THAT(errors[0], ::testing::HasSubstr("zones.mpm.activation_pressure")) << bad;
+  }
+}
+
 TEST(SceneChecks, Zone_corners_lie_on_grid_lines) {
   std::string zones = kV6Zones;
   zones.replace(zones.find("0.12,"), 5, "0.121,");

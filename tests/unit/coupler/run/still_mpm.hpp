@@ -5,6 +5,8 @@
 // for that state (nodal mass ρV_c per node, internal energy pV_c/(γ-1) per
 // ghost cell, 2 particles per zone cell). It counts the mass injected into it.
 // `silent_from_step`: from that step on it stops answering (a hung solver).
+// It counts the requests it gets between Setup and Shutdown and answers Activate
+// (a dormant zone), noting the Activate's sim_time.
 
 #include <atomic>
 #include <cstdint>
@@ -23,6 +25,10 @@ struct StillMpm {
   double cell_volume = 0;
   std::int64_t silent_from_step = -1;
   std::atomic<double> injected_mass{0};
+  std::atomic<int> requests_after_setup{0};  ///< every request but Setup and Shutdown
+  std::atomic<double> activated_at{-1};      ///< sim_time of the Activate [s]; -1: none
+  int idle_timeout_ms = 10000;               ///< how long it waits for a request
+  std::atomic<bool> shut_down{false};        ///< it got Shutdown (was still serving)
 };
 
 inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_by,
@@ -37,7 +43,7 @@ inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_
 inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint, StillMpm& mpm) {
   namespace v1 = cosim::v1;
   cosim::TransportOptions transport;
-  transport.idle_timeout = std::chrono::milliseconds(10000);
+  transport.idle_timeout = std::chrono::milliseconds(mpm.idle_timeout_ms);
   cosim::Participant participant(context, endpoint, "mpm", transport);
   v1::Hello hello;
   hello.set_role(v1::ROLE_MPM_SOLVER);
@@ -52,11 +58,16 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
     cosim::Message reply;
     const auto& header = request.header;
     if (header.has_shutdown()) {
+      mpm.shut_down = true;
       reply.header.mutable_shutdown_ack();
       participant.reply(request, std::move(reply));
       return;
     }
-    if (header.has_setup()) {
+    if (!header.has_setup()) ++mpm.requests_after_setup;
+    if (header.has_activate()) {
+      mpm.activated_at = header.envelope().sim_time();
+      reply.header.mutable_activate_ack()->set_stable_dt(1.0);
+    } else if (header.has_setup()) {
       for (const auto& r : header.setup().regions()) regions[r.name()] = r;
       *reply.header.mutable_setup_ack()->mutable_regions() = header.setup().regions();
       reply.header.mutable_setup_ack()->set_stable_dt(1.0);

@@ -146,5 +146,29 @@ TEST(MpmServe, ADormantZoneRefusesAnExchangeUntilActivated) {
   EXPECT_NE(asleep.stop_reason().find("UNEXPECTED"), std::string::npos);
 }
 
+TEST(MpmServe, AZoneWokenAtTimeTStartsItsClockThere) {
+  ServedMpm served;
+  served.request(setup(blast_text(), {}, "", true));
+  served.hub().set_clock(7, 2.5e-3);  // the coupler's t^n at the switch
+  cosim::Message activate;
+  activate.header.mutable_activate()->set_reason("test");
+  served.request(std::move(activate));
+  cosim::Message from_zero;
+  add_advance(from_zero, 1e-7, 0.0);
+  EXPECT_NE(served.refusal(std::move(from_zero)).find("solver is at 0.0025 s"), std::string::npos);
+  EXPECT_NE(served.stop_reason().find("UNEXPECTED"), std::string::npos);
+
+  ServedMpm woken;
+  woken.request(setup(blast_text(), {}, "", true));
+  woken.hub().set_clock(7, 2.5e-3);
+  cosim::Message wake;
+  wake.header.mutable_activate()->set_reason("test");
+  woken.request(std::move(wake));
+  cosim::Message step;
+  add_advance(step, 1e-7, 2.5e-3);
+  const auto reply = woken.request(std::move(step));
+  EXPECT_DOUBLE_EQ(reply.header.exchange_result().results(0).advanced().time(), 2.5e-3 + 1e-7);
+}
+
 }  // namespace
 }  // namespace mpfd::mpm
