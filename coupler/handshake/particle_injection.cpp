@@ -14,14 +14,20 @@ void InjectionRule::check() const {
   if (!(min_particle_mass > 0 && min_particle_mass <= reference_mass))  // text only on failure
     require(false, "particle injection", "min_particle_mass", min_particle_mass,
             "in (0, reference_mass = " + shortest_text(reference_mass) + "]");
+  require(min_particle_volume >= 0, "particle injection", "min_particle_volume",
+          min_particle_volume, ">= 0");
 }
 
-std::size_t particle_count(double mass, const InjectionRule& rule) {
+std::size_t particle_count(double mass, double volume, const InjectionRule& rule) {
   const auto group = static_cast<double>(kInjectionGroup);
-  if (!(mass >= group * rule.min_particle_mass)) return 0;
+  // The dense-inflow bound of the header: m_e and m_min scaled to ρ V_min.
+  const double scale =
+      volume > 0 ? std::max(1.0, mass / volume * rule.min_particle_volume / rule.reference_mass)
+                 : 1.0;
+  if (!(mass >= group * scale * rule.min_particle_mass)) return 0;
   // T (4-15), then up to a multiple of 4: ceil(M / m_e) <= s < M / m_e + 4.
   return kInjectionGroup *
-         static_cast<std::size_t>(std::ceil(mass / (group * rule.reference_mass)));
+         static_cast<std::size_t>(std::ceil(mass / (group * scale * rule.reference_mass)));
 }
 
 template <int Dim>
@@ -31,7 +37,7 @@ std::size_t count_new_particles(const Parcels<Dim>& pending, const InjectionRule
   require_length(count.size(), pending.size(), "particle injection", "count");
   std::size_t total = 0;
   for (std::size_t t = 0; t < pending.size(); ++t) {
-    count[t] = particle_count(pending.mass[t], rule);
+    count[t] = particle_count(pending.mass[t], pending.volume[t], rule);
     total += count[t];
   }
   return total;

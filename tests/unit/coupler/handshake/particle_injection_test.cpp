@@ -85,12 +85,12 @@ TYPED_TEST_SUITE(ParticleInjection, Dimensions);
 // lighter than min(m_min, m_e / 2) nor heavier than m_e.
 TEST(ParticleCount, Multiple_of_4_and_bounded_particle_mass) {
   const InjectionRule rule{1.0, 0.3};
-  EXPECT_EQ(particle_count(1.19, rule), 0u);  // below 4 m_min: waits
-  EXPECT_EQ(particle_count(1.2, rule), 4u);
-  EXPECT_EQ(particle_count(4.0, rule), 4u);
-  EXPECT_EQ(particle_count(4.01, rule), 8u);
+  EXPECT_EQ(particle_count(1.19, 0.0, rule), 0u);  // below 4 m_min: waits
+  EXPECT_EQ(particle_count(1.2, 0.0, rule), 4u);
+  EXPECT_EQ(particle_count(4.0, 0.0, rule), 4u);
+  EXPECT_EQ(particle_count(4.01, 0.0, rule), 8u);
   for (double m = 1.2; m < 50; m *= 1.013) {
-    const std::size_t s = particle_count(m, rule);
+    const std::size_t s = particle_count(m, 0.0, rule);
     ASSERT_EQ(s % 4, 0u) << m;
     const double mp = m / static_cast<double>(s);
     EXPECT_LE(mp, rule.reference_mass) << m;
@@ -98,6 +98,29 @@ TEST(ParticleCount, Multiple_of_4_and_bounded_particle_mass) {
   }
   EXPECT_THROW((InjectionRule{1.0, 1.5}.check()), Error);
   EXPECT_THROW((InjectionRule{1.0, 0.0}.check()), Error);
+}
+
+// Dense inflow: with V_min set, a parcel denser than m_e / V_min makes particles
+// of at least its density times V_min (count per volume bounded), and below
+// that density the count is T (4-15)'s as without the bound.
+TEST(ParticleCount, Dense_parcels_make_no_particle_smaller_than_the_minimum_volume) {
+  const InjectionRule rule{1.0, 0.25, 0.5};  // m_e = 1 kg; V_min = 0.5 m^3: 2 kg/m^3 switches
+  EXPECT_EQ(particle_count(8.0, 8.0, rule), particle_count(8.0, 0.0, rule));  // 1 kg/m^3: unbound
+  EXPECT_EQ(particle_count(8.0, 4.0, rule), 8u);  // 2 kg/m^3: the switch itself
+  for (const double density : {3.0, 10.0, 100.0, 1000.0}) {
+    const double volume = 40.0;
+    const double mass = density * volume;
+    const std::size_t s = particle_count(mass, volume, rule);
+    ASSERT_GT(s, 0u) << density;
+    ASSERT_EQ(s % 4, 0u) << density;
+    EXPECT_GE(volume / static_cast<double>(s), 0.5 * 0.5 * (1 - 1e-12)) << density;  // >= V_min/2
+    EXPECT_LE(volume / static_cast<double>(s), 0.5 * (1 + 1e-12))
+        << density;  // no bigger than V_min
+    EXPECT_LT(s, particle_count(mass, 0.0, rule)) << density;
+  }
+  // The waiting rule scales with the density too: 4 m_min ρ V_min / m_e.
+  EXPECT_EQ(particle_count(0.99 * 4 * 0.25 * 5, 0.99 * 4 * 0.25 * 5 / 10.0, rule), 0u);
+  EXPECT_THROW((InjectionRule{1.0, 0.5, -1.0}.check()), Error);
 }
 
 // A constant inflow f_m = 0.3 m_e per step with m_min = m_e / 2 waits 7 steps
