@@ -13,6 +13,7 @@
 #include "common/io/run_summary.hpp"
 #include "cosim/recorder.hpp"
 #include "coupler/run/cfdmp_step.hpp"
+#include "coupler/run/gauges.hpp"
 #include "coupler/run/wire.hpp"
 
 namespace mpfd::coupler {
@@ -114,7 +115,12 @@ class Loop {
  public:
   Loop(const config::Scene& scene, const ZoneLayout& layout, cosim::Hub& hub,
        io::RunSummary& summary, const CoupledRunOptions& options)
-      : scene_(scene), step_(scene, layout), hub_(hub), summary_(summary), options_(options) {}
+      : scene_(scene),
+        step_(scene, layout),
+        gauges_(scene, options.out_dir),
+        hub_(hub),
+        summary_(summary),
+        options_(options) {}
 
   CoupledRunReport run() {
     const auto start = Clock::now();
@@ -166,6 +172,8 @@ class Loop {
   void record_summary(const std::string& status, double wall) {
     const Totals now = current();
     const auto entries = audit(initial_, now);
+    gauges_.flush();
+    summary_.set_detail("gauges", gauges_.listing());
     summary_.set_status(status);
     summary_.set_progress(report_.steps, report_.time, scene_.time.end, wall);
     summary_.set_conservation(entries);
@@ -198,10 +206,12 @@ class Loop {
   std::pair<double, double> exchange(const StepPlan& plan) {
     cosim::Message fdm, mpm;
     step_.build(plan, fdm, mpm);
+    gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time, fdm, mpm);
     hub_.send("fdm", std::move(fdm));
     hub_.send("mpm", std::move(mpm));
     const auto replies = hub_.gather(kPeers);
     step_.read(plan, replies[0], replies[1]);
+    gauges_.read(replies[0], replies[1]);
     const auto& traffic = step_.traffic();
     injected_ += traffic.injected;
     removed_ += traffic.removed;
@@ -223,6 +233,7 @@ class Loop {
 
   const config::Scene& scene_;
   CfdmpStep<Dim> step_;
+  CoupledGauges gauges_;
   cosim::Hub& hub_;
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;
