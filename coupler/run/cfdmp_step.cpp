@@ -13,17 +13,11 @@ namespace {
 constexpr const char* kFdm = "fdm";
 constexpr const char* kMpm = "mpm";
 
-std::uint32_t material_index(const config::Scene& scene, const std::string& name) {
-  for (std::size_t i = 0; i < scene.materials.size(); ++i)
-    if (scene.materials[i].name == name) return static_cast<std::uint32_t>(i);
-  throw Error("scene '" + scene.name + "': no material '" + name + "'");
-}
-
 }  // namespace
 
 template <int Dim>
 CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout)
-    : scene_(scene), layout_(layout) {
+    : scene_(scene), layout_(layout), injected_material_(scene) {
   if (layout.dimension != Dim)
     throw Error("CfdmpStep<" + std::to_string(Dim) + "> built for a " +
                 std::to_string(layout.dimension) + "D layout");
@@ -62,7 +56,6 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout)
   returned_mass_.assign(faces, 0);
   returned_energy_.assign(faces, 0);
   returned_momentum_.assign(faces, Vec::Zero());
-  fluid_material_ = material_index(scene, scene.initial.material);
 }
 
 template <int Dim>
@@ -194,7 +187,10 @@ void CfdmpStep<Dim>::add_injection(cosim::Message& mpm) {
                                    {position, velocity, mass, volume, energy, face});
   std::vector<std::uint64_t> ids(n);
   for (auto& id : ids) id = next_id_++;
-  const std::vector<std::uint32_t> material(n, fluid_material_);
+  std::vector<std::uint32_t> material(n);
+  for (std::size_t p = 0; p < n; ++p)
+    material[p] = injected_material_.choose(mass[p] / volume[p], energy[p] / mass[p],
+                                            strip_now_.pressure[strip_layout_.inner[face[p]]]);
   cosim::add_array(mpm, {"injected", "id", {}, "1"}, std::span<const std::uint64_t>(ids));
   cosim::add_array(
       mpm, {"injected", "position", {n, 3}, "m"},

@@ -21,6 +21,7 @@
 #include "coupler/handshake/interface_nodes.hpp"
 #include "coupler/handshake/particle_injection.hpp"
 #include "coupler/handshake/strip_layout.hpp"
+#include "coupler/run/injected_material.hpp"
 #include "coupler/run/zone_layout.hpp"
 
 namespace mpfd::coupler {
@@ -109,7 +110,7 @@ class CfdmpStep {
       outer_in_deposit_;  ///< per face cell: its outer cell's place in deposit_cells
   std::array<double, 3> inactive_centre_{};  ///< particle coordinates on inactive axes
   handshake::InjectionRule rule_;
-  std::uint32_t fluid_material_ = 0;
+  InjectedMaterial injected_material_;
   std::uint64_t next_id_ = std::uint64_t{1} << 48;  ///< injected ids, far above the MPM's own
 
   Strip strip_now_, strip_prev_;
