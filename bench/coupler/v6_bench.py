@@ -73,8 +73,9 @@ def read_gauges(run_dir):
         p = [r[j] for r in data]
         p0, peak = p[0], max(p)
         threshold = p0 + 0.1 * (peak - p0)
-        k = next(k for k in range(1, len(p)) if p[k] > threshold)
-        arrival = t[k - 1] + (threshold - p[k - 1]) / (p[k] - p[k - 1]) * (t[k] - t[k - 1])
+        k = next((k for k in range(1, len(p)) if p[k] > threshold), None)
+        arrival = None if k is None else \
+            t[k - 1] + (threshold - p[k - 1]) / (p[k] - p[k - 1]) * (t[k] - t[k - 1])
         out[g] = {"peak_overpressure_Pa": peak - p0, "arrival_s": arrival,
                   "peak_time_s": t[p.index(peak)]}
     return out
