@@ -22,12 +22,6 @@ constexpr double kMinParticleShare = 1.0 / 16;
 /// 3.4x the seeding's density).
 constexpr double kMaxDensification = 4;
 
-std::uint32_t material_index(const config::Scene& scene, const std::string& name) {
-  for (std::size_t i = 0; i < scene.materials.size(); ++i)
-    if (scene.materials[i].name == name) return static_cast<std::uint32_t>(i);
-  throw Error("scene '" + scene.name + "': no material '" + name + "'");
-}
-
 /// The v1.1 outflow_* totals of `region` (one row each).
 Totals outflow_totals(const cosim::Message& reply, std::string_view peer, std::string_view region) {
   const auto read = [&](std::string_view name, std::size_t values) {
@@ -48,7 +42,7 @@ Totals outflow_totals(const cosim::Message& reply, std::string_view peer, std::s
 template <int Dim>
 CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
                           SolverFeatures features)
-    : scene_(scene), layout_(layout), features_(features) {
+    : scene_(scene), layout_(layout), features_(features), injected_material_(scene) {
   if (layout.dimension != Dim)
     throw Error("CfdmpStep<" + std::to_string(Dim) + "> built for a " +
                 std::to_string(layout.dimension) + "D layout");
@@ -97,7 +91,6 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
   returned_mass_.assign(faces, 0);
   returned_energy_.assign(faces, 0);
   returned_momentum_.assign(faces, Vec::Zero());
-  fluid_material_ = material_index(scene, scene.initial.material);
 }
 
 template <int Dim>
@@ -301,7 +294,10 @@ void CfdmpStep<Dim>::add_injection(cosim::Message& mpm) {
                                    {position, velocity, mass, volume, energy, face});
   ids.resize(n);
   for (auto& id : ids) id = next_id_++;
-  material.assign(n, fluid_material_);
+  material.resize(n);
+  for (std::size_t p = 0; p < n; ++p)
+    material[p] = injected_material_.choose(mass[p] / volume[p], energy[p] / mass[p],
+                                            strip_now_.pressure[strip_layout_.inner[face[p]]]);
   cosim::add_array(mpm, {"injected", "id", {}, "1"}, std::span<const std::uint64_t>(ids));
   cosim::add_array(mpm, {"injected", "position", {n, 3}, "m"},
                    to_wire_vectors<Dim>(position, layout_, inactive_centre_, scratch_.wire));

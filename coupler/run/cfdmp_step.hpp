@@ -23,6 +23,7 @@
 #include "coupler/handshake/interface_nodes.hpp"
 #include "coupler/handshake/particle_injection.hpp"
 #include "coupler/handshake/strip_layout.hpp"
+#include "coupler/run/injected_material.hpp"
 #include "coupler/run/zone_layout.hpp"
 
 namespace mpfd::coupler {
@@ -134,7 +135,7 @@ class CfdmpStep {
   std::vector<std::size_t> face_in_export_;  ///< per face cell: its place in coupling_face
   std::array<double, 3> inactive_centre_{};  ///< particle coordinates on inactive axes
   handshake::InjectionRule rule_;
-  std::uint32_t fluid_material_ = 0;
+  InjectedMaterial injected_material_;
   std::uint64_t next_id_ = std::uint64_t{1} << 48;  ///< injected ids, far above the MPM's own
 
   Strip strip_now_, strip_prev_;

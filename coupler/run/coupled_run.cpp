@@ -14,6 +14,7 @@
 #include "cosim/recorder.hpp"
 #include "coupler/run/activation.hpp"
 #include "coupler/run/cfdmp_step.hpp"
+#include "coupler/run/gauges.hpp"
 #include "coupler/run/wire.hpp"
 
 namespace mpfd::coupler {
@@ -150,6 +151,7 @@ class Loop {
       : scene_(scene),
         step_(scene, layout, features),
         watch_(scene.zones->mpm->activation_pressure),
+        gauges_(scene, options.out_dir),
         hub_(hub),
         summary_(summary),
         options_(options) {}
@@ -207,6 +209,8 @@ class Loop {
     const Totals now = current();
     // What left through open faces (0 from a solver that does not report it, v1.0).
     const auto entries = audit(initial_, now, sum({step_.fdm_outflow(), step_.mpm_outflow()}));
+    gauges_.flush();
+    summary_.set_detail("gauges", gauges_.listing());
     summary_.set_status(status);
     summary_.set_progress(report_.steps, report_.time, scene_.time.end, wall);
     summary_.set_conservation(entries);
@@ -259,11 +263,14 @@ class Loop {
     clear_for_reuse(fdm_request_);
     clear_for_reuse(mpm_request_);
     step_.build(plan, fdm_request_, mpm_request_);
+    gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time, plan.mpm,
+                fdm_request_, mpm_request_);
     hub_.send_keeping_header("fdm", fdm_request_);
     if (plan.mpm) hub_.send_keeping_header("mpm", mpm_request_);
     auto replies = hub_.gather(peers());
     if (!plan.mpm) replies.emplace_back();
     step_.read(plan, replies[0], replies[1]);
+    gauges_.read(replies[0], replies[1]);
     if (!plan.mpm) {
       watch_.observe(step_.strip_pressure(), plan.advance ? plan.time + plan.dt : plan.time);
       keep_mpm_alive();
@@ -339,6 +346,7 @@ class Loop {
   nlohmann::json audit_switch_;  ///< the zone's totals either side of the activation
   Totals switch_;                ///< particles - FDM cells of the zone at the activation
   Clock::time_point mpm_contact_ = Clock::now();  ///< the last reply of a sleeping MPM
+  CoupledGauges gauges_;
   cosim::Hub& hub_;
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;

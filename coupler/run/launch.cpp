@@ -10,6 +10,7 @@
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
 #include "common/io/output_directory.hpp"
+#include "coupler/run/gauges.hpp"
 #include "coupler/run/zone_layout.hpp"
 #include "fdm_solver/serve/serve.hpp"
 #include "mpm_solver/serve/serve.hpp"
@@ -74,6 +75,7 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
   const std::string text = read_text(scene_file);
   const config::Scene scene = config::parse_scene(text, scene_file.string());
   (void)make_zone_layout(scene);  // refuse a scene the coupler cannot drive before anything starts
+  for (const auto& gauge : scene.gauges) (void)gauge_owner(scene, gauge);
   if (launch.mode == LaunchMode::external &&
       (!launch.endpoints.contains("fdm") || !launch.endpoints.contains("mpm")))
     throw Error("external solvers need --endpoints fdm=URL,mpm=URL");

@@ -1,0 +1,134 @@
+#include "coupler/run/gauges.hpp"
+
+#include <algorithm>
+
+#include "common/core/error.hpp"
+#include "coupler/run/wire.hpp"
+
+namespace mpfd::coupler {
+namespace {
+
+constexpr const char* kGroup = "gauges";
+constexpr std::size_t kQuantities = 5;  // density, pressure, velocity_x, velocity_y, velocity_z
+
+template <class Box>
+bool holds(const Box& box, const config::Vec3& point) {
+  for (int a = 0; a < 3; ++a)
+    if (point[a] < box.lower[a] || point[a] > box.upper[a]) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge) {
+  if (scene.zones && scene.zones->mpm && holds(*scene.zones->mpm, gauge.position)) return "mpm";
+  if (scene.zones && scene.zones->fdm && holds(*scene.zones->fdm, gauge.position)) return "fdm";
+  throw Error("scene '" + scene.name + "': gauge '" + gauge.name + "' at (" +
+              std::to_string(gauge.position[0]) + ", " + std::to_string(gauge.position[1]) + ", " +
+              std::to_string(gauge.position[2]) +
+              ") m lies in neither zones.fdm nor zones.mpm; a coupled run samples a gauge in the "
+              "zone that owns it");
+}
+
+CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::path& out_dir)
+    : scene_(scene) {
+  // The names each solver's SampleGauges knows (fdm_solver/serve, mpm_solver/serve).
+  fdm_ = {"fdm", {}, {"rho", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
+  mpm_ = {"mpm", {}, {"density", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
+  fdm_all_ = fdm_;
+  std::vector<io::GaugePoint> points;
+  for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
+    owners_.push_back(gauge_owner(scene, scene.gauges[g]));
+    (owners_.back() == "mpm" ? mpm_ : fdm_).gauges.push_back(g);
+    fdm_all_.gauges.push_back(g);
+    points.push_back({scene.gauges[g].name, scene.gauges[g].position});
+  }
+  sample_.assign(kQuantities * points.size(), 0.0);
+  if (points.empty()) return;
+  const auto interval = scene.output.gauge_interval;
+  // The quantities of `fdm_solver run`'s gauges.csv, so its plot tools apply.
+  recorder_.emplace(out_dir, std::move(points),
+                    std::vector<io::GaugeQuantity>{{"density", "kg/m^3"},
+                                                   {"pressure", "Pa"},
+                                                   {"velocity_x", "m/s"},
+                                                   {"velocity_y", "m/s"},
+                                                   {"velocity_z", "m/s"}});
+  // Room for the samples up front, so recording does not allocate while stepping.
+  if (interval)
+    recorder_->reserve(static_cast<std::size_t>(
+        std::min({scene.time.end / *interval + 16.0,
+                  static_cast<double>(scene.time.max_steps) + 1.0, 1.0e7})));
+}
+
+void CoupledGauges::add_to(Part& part, cosim::Message& request) {
+  part.operation = -1;
+  if (part.gauges.empty()) return;
+  auto& exchange = exchange_of(request);
+  part.operation = exchange.operations_size();
+  auto& op = *exchange.add_operations()->mutable_sample();
+  op.set_group(kGroup);
+  for (const std::size_t g : part.gauges) {
+    op.add_gauge_names(scene_.gauges[g].name);
+    for (const double x : scene_.gauges[g].position) op.add_positions(x);
+  }
+  for (const auto& q : part.quantities) op.add_quantities(q);
+}
+
+void CoupledGauges::add(bool advance, double time, bool mpm_awake, cosim::Message& fdm,
+                        cosim::Message& mpm) {
+  fdm_.operation = mpm_.operation = fdm_all_.operation = -1;
+  if (!recorder_ || (!advance && started_)) return;
+  const auto interval = scene_.output.gauge_interval;
+  // As the standalone loop (common/io/standalone_loop.hpp): the first step end at
+  // or past each multiple of the interval.
+  if (started_ && interval && time < next_sample_ * (1 - 1e-12)) return;
+  started_ = true;
+  if (interval)
+    while (next_sample_ <= time * (1 + 1e-12)) next_sample_ += *interval;
+  pending_time_ = time;
+  if (!mpm_awake) {
+    add_to(fdm_all_, fdm);
+    return;
+  }
+  add_to(fdm_, fdm);
+  add_to(mpm_, mpm);
+}
+
+void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
+  if (part.operation < 0) return;
+  const auto& result = result_of(reply, part.peer, part.operation);
+  if (!result.has_sampled() || result.sampled().count() != part.gauges.size())
+    throw Error("solver '" + part.peer + "' answered SampleGauges of " +
+                std::to_string(part.gauges.size()) + " gauges with " +
+                (result.has_sampled() ? std::to_string(result.sampled().count()) + " samples"
+                                      : std::string("another result")));
+  for (std::size_t q = 0; q < kQuantities; ++q) {
+    read_doubles(reply, part.peer, kGroup, part.quantities[q], part.gauges.size(), values_);
+    for (std::size_t i = 0; i < part.gauges.size(); ++i)
+      sample_[kQuantities * part.gauges[i] + q] = values_[i];
+  }
+}
+
+void CoupledGauges::read(const cosim::Message& fdm, const cosim::Message& mpm) {
+  if (fdm_.operation < 0 && mpm_.operation < 0 && fdm_all_.operation < 0) return;
+  read_from(fdm_all_, fdm);
+  read_from(fdm_, fdm);
+  read_from(mpm_, mpm);
+  recorder_->record(pending_time_, sample_);
+  fdm_.operation = mpm_.operation = fdm_all_.operation = -1;
+}
+
+void CoupledGauges::flush() {
+  if (recorder_) recorder_->flush();
+}
+
+nlohmann::json CoupledGauges::listing() const {
+  nlohmann::json list = nlohmann::json::array();
+  for (std::size_t g = 0; g < scene_.gauges.size(); ++g)
+    list.push_back({{"name", scene_.gauges[g].name},
+                    {"position", scene_.gauges[g].position},
+                    {"solver", owners_[g]}});
+  return list;
+}
+
+}  // namespace mpfd::coupler

@@ -1,0 +1,72 @@
+#pragma once
+// Gauges of a coupled run (the thesis's tracking points, T §4.4.2 Fig. 4.11):
+// each scene gauge is read by the solver whose zone owns its point — the MPM
+// inside the MPM zone (nearest particle), the FDM elsewhere in the FDM zone
+// (the cell holding it) — through the SampleGauges operation of protocol v1
+// (proto/README.md §6), appended to the step's Exchange. The histories go to
+// <out>/gauges.csv and gauges.h5 in the layout of the standalone solvers
+// (docs/output.md), so the same plot tools read them.
+
+#include <cstddef>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/config/scene.hpp"
+#include "common/io/gauge_recorder.hpp"
+#include "cosim/message.hpp"
+
+namespace mpfd::coupler {
+
+/// "mpm" for a point in the scene's MPM zone (bounds included), "fdm" for one
+/// elsewhere in the FDM zone. Throws mpfd::Error naming the gauge when neither holds it.
+std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge);
+
+class CoupledGauges {
+ public:
+  /// Opens <out_dir>/gauges.csv when the scene has gauges.
+  CoupledGauges(const config::Scene& scene, const std::filesystem::path& out_dir);
+
+  /// Appends SampleGauges to the requests of a step that ends at `time` [s] when a
+  /// sample is due then (every step, or every output.gauge_interval); a request
+  /// gets it only if its solver owns a gauge. `advance`: false for an exchange
+  /// that does not move time (only the first one samples). `mpm_awake`: false
+  /// while the MPM zone sleeps (activation.hpp); the FDM, which then runs the
+  /// zone's cells, samples every gauge.
+  void add(bool advance, double time, bool mpm_awake, cosim::Message& fdm, cosim::Message& mpm);
+  /// Records the sample asked for by the last add() from the two replies.
+  void read(const cosim::Message& fdm, const cosim::Message& mpm);
+  /// Writes gauges.h5 with every sample so far and flushes the CSV.
+  void flush();
+
+  /// [{name, position [m], solver}] for summary.json.
+  [[nodiscard]] nlohmann::json listing() const;
+  [[nodiscard]] std::size_t sample_count() const {
+    return recorder_ ? recorder_->sample_count() : 0;
+  }
+
+ private:
+  struct Part {
+    std::string peer;
+    std::vector<std::size_t> gauges;  ///< indices into the scene's gauges
+    std::vector<std::string> quantities;
+    int operation = -1;  ///< index of SampleGauges in the pending request; -1: none
+  };
+  void add_to(Part& part, cosim::Message& request);
+  void read_from(const Part& part, const cosim::Message& reply);
+
+  const config::Scene& scene_;
+  std::optional<io::GaugeRecorder> recorder_;
+  std::vector<std::string> owners_;
+  Part fdm_, mpm_;
+  Part fdm_all_;                ///< every gauge, sampled by the FDM while the MPM sleeps
+  std::vector<double> values_;  ///< one quantity of a reply
+  bool started_ = false;
+  double next_sample_ = 0;
+  double pending_time_ = 0;
+  std::vector<double> sample_;  ///< gauge-major: density, pressure, velocity_x|y|z
+};
+
+}  // namespace mpfd::coupler
