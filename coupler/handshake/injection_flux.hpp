@@ -48,11 +48,6 @@ struct Parcels {
   void clear(std::size_t t);
 };
 
-/// Adds one step's fluxes, T (4-10) ... (4-14), to `pending` where the flow
-/// enters the zone, and moves the parcel to `returned` (else zero) where it
-/// does not. `strip` is the strip_cells export at t^n, `dt` the step Δt^n.
-/// Throws mpfd::Error naming the face cell if a density or the internal energy
-/// of a cell is not > 0.
 /// What the FDM put through each face cell in one step toward the zone
 /// (protocol v1.1 `coupling_face`, times the face's side): kg, kg m/s, J.
 template <int Dim>
@@ -80,6 +75,11 @@ void accumulate_crossed_amounts(const CrossedAmounts<Dim>& crossed, const CellSt
                                 const CellGeometry<Dim>& geometry, double dt, Parcels<Dim>& pending,
                                 const Amounts<Dim>& returned);
 
+/// Adds one step's fluxes, T (4-10) ... (4-14), to `pending` where the flow
+/// enters the zone, and moves the parcel to `returned` (else zero) where it
+/// does not. `strip` is the strip_cells export at t^n, `dt` the step Δt^n.
+/// Throws mpfd::Error naming the face cell if a density or the internal energy
+/// of a cell is not > 0. (For a solver without v1.1 `face_crossing`.)
 template <int Dim>
 void accumulate_face_fluxes(const CellStates<Dim>& strip, const StripLayout<Dim>& layout,
                             const CellGeometry<Dim>& geometry, double dt, Parcels<Dim>& pending,

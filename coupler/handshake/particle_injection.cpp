@@ -26,8 +26,12 @@ std::size_t particle_count(double mass, double volume, const InjectionRule& rule
                  : 1.0;
   if (!(mass >= group * scale * rule.min_particle_mass)) return 0;
   // T (4-15), then up to a multiple of 4: ceil(M / m_e) <= s < M / m_e + 4.
-  return kInjectionGroup *
-         static_cast<std::size_t>(std::ceil(mass / (group * scale * rule.reference_mass)));
+  const double groups = std::ceil(mass / (group * scale * rule.reference_mass));
+  if (!(groups <= 1e9))  // also NaN: no parcel of a sane run asks for billions of particles
+    throw Error("particle injection: a parcel of " + shortest_text(mass) + " kg asks for " +
+                shortest_text(group * groups) + " particles of reference mass " +
+                shortest_text(scale * rule.reference_mass) + " kg");
+  return kInjectionGroup * static_cast<std::size_t>(groups);
 }
 
 template <int Dim>

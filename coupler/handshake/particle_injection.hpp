@@ -7,12 +7,14 @@
 //   v_p = P / M,  e_p^int = (E - ½|P|²/M) / s,  V_p = V / s      T (4-18), see below
 // m_e is the mass of the zone's own particles. Minimum-mass rule: a parcel
 // becomes particles only once M >= 4 m_min, else it waits (and keeps
-// accumulating); so m_p >= min(m_min, m_e / 2) and m_p <= m_e always.
+// accumulating); so m_p >= min(m_min, m_e / 2) and m_p <= m_e (both as
+// raised for a dense parcel, below).
 // Dense inflow: with m_e fixed, a parcel k times denser than the zone's seeding
 // becomes k times more particles per volume (V6: detonation products at ~100x
 // the air's density gave 2.16 M particles, slower than pure MPM). A rule with
 // min_particle_volume V_min raises m_e, and m_min with it, to ρ_parcel V_min
-// for such parcels: particles never get smaller than V_min, and T's aim, no
+// for such parcels: they make no more particles per volume than a parcel of
+// density m_e / V_min (within the rounding of T (4-15) above), and T's aim, no
 // large mass jump between a new particle and its neighbours, still holds, the
 // neighbours having come in at about the same density.
 // e_p^int: for one step's parcel of an ideal gas, (E - ½ M v_f²)/s =

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "common/core/error.hpp"
+#include "common/core/require.hpp"
 #include "coupler/handshake/particle_removal.hpp"
 #include "coupler/run/wire.hpp"
 
@@ -24,16 +26,16 @@ constexpr double kMaxDensification = 4;
 
 /// The v1.1 outflow_* totals of `region` (one row each).
 Totals outflow_totals(const cosim::Message& reply, std::string_view peer, std::string_view region) {
-  const auto read = [&](std::string_view name, std::size_t values) {
-    const auto view = cosim::view_array<double>(reply, region, name);
-    check_value_count(reply, peer, region, name, view.values().size(), values);
-    return view.values();
-  };
   Totals totals;
-  totals.mass = read("outflow_mass", 1)[0];
-  totals.energy = read("outflow_energy", 1)[0];
-  const auto momentum = read("outflow_momentum", 3);
-  for (int a = 0; a < 3; ++a) totals.momentum[a] = momentum[a];
+  // Copied while the view lives: a view of a misaligned frame holds its own copy.
+  const auto read = [&](std::string_view name, std::span<double> into) {
+    const auto view = cosim::view_array<double>(reply, region, name);
+    check_value_count(reply, peer, region, name, view.values().size(), into.size());
+    std::copy_n(view.values().begin(), into.size(), into.begin());
+  };
+  read("outflow_mass", {&totals.mass, 1});
+  read("outflow_energy", {&totals.energy, 1});
+  read("outflow_momentum", totals.momentum);
   return totals;
 }
 
@@ -141,7 +143,11 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
     fdm_ops_.push_back(Op::export_owned);
   }
   if (!plan.mpm && plan.audit) {
-    add_export(fdm, "dormant_zone", {"rho", "momentum", "E"});
+    if (features_.fdm_outflow)
+      add_export(fdm, "dormant_zone",
+                 {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"});
+    else
+      add_export(fdm, "dormant_zone", {"rho", "momentum", "E"});
     fdm_ops_.push_back(Op::export_dormant);
   }
   add_propose_dt(fdm);
@@ -200,6 +206,14 @@ void CfdmpStep<Dim>::read_crossed(const cosim::Message& reply) {
   read_doubles(reply, kFdm, "coupling_face", "crossed_mass", n, mass);
   read_doubles(reply, kFdm, "coupling_face", "crossed_energy", n, energy);
   read_wire_vectors<Dim>(reply, kFdm, "coupling_face", "crossed_momentum", n, layout_, momentum);
+  for (std::size_t i = 0; i < n; ++i) {  // a peer's NaN would pass every m > 0 test below
+    const bool finite = std::isfinite(mass[i]) && std::isfinite(energy[i]) &&
+                        std::isfinite(momentum[i].squaredNorm());
+    if (!finite)
+      throw Error("solver 'fdm' exported a non-finite crossed amount at coupling_face entry " +
+                  std::to_string(i) + ": mass " + shortest_text(mass[i]) + " kg, energy " +
+                  shortest_text(energy[i]) + " J");
+  }
   const double side = layout_.face_side;
   for (std::size_t t = 0; t < n; ++t) {
     const std::size_t e = face_in_export_[t];
@@ -397,6 +411,9 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
     } else if (fdm_ops_[i] == Op::export_dormant) {
       mpm_totals_ =
           cell_totals(reply, "dormant_zone", static_cast<std::size_t>(layout_.mpm_zone.count()));
+      // The zone's faces on the domain boundary are the FDM's while it sleeps; the last value
+      // stays in the audit after the activation (the MPM's ledger starts then).
+      if (features_.fdm_outflow) dormant_outflow_ = outflow_totals(reply, kFdm, "dormant_zone");
     } else if (fdm_ops_[i] == Op::propose) {
       fdm_dt_ = result.proposed().stable_dt();
     }

@@ -4,13 +4,14 @@
 // crosses between steps: the strip_cells of t^{n-1} and t^n, the ghost_nodes of
 // t^n, the particles removed in the last step and the face parcels.
 //   FDM: [apply deposit_cells ADD, apply ghost_cells SET, advance, export strip_cells,
-//         (export fdm_owned), propose_dt]
+//         (export coupling_face: v1.1), (export fdm_owned), propose_dt]
 //   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
 //         remove "crossed" (left mpm_zone), (export mpm_zone), propose_dt]
 // A step without advance (step 0, and the one before each output) keeps only the
 // applies of deposits, the exports and the proposals. While the MPM zone is
 // dormant (coupler/run/activation.hpp) only the FDM gets a request: advance,
-// export strip_cells, (export fdm_owned and dormant_zone), propose_dt.
+// export strip_cells, (export fdm_owned and dormant_zone), propose_dt; the
+// gauges (run/gauges.hpp) append SampleGauges to either request when due.
 
 #include <array>
 #include <cstdint>
@@ -84,6 +85,8 @@ class CfdmpStep {
   /// since the start, as the solvers report it (zero where they do not).
   [[nodiscard]] const Totals& fdm_outflow() const { return fdm_outflow_; }
   [[nodiscard]] const Totals& mpm_outflow() const { return mpm_outflow_; }
+  /// What the FDM put through the MPM zone's domain faces while the zone slept (v1.1).
+  [[nodiscard]] const Totals& dormant_outflow() const { return dormant_outflow_; }
   [[nodiscard]] const SolverFeatures& features() const { return features_; }
   [[nodiscard]] const StepTraffic& traffic() const { return traffic_; }
 
@@ -164,7 +167,7 @@ class CfdmpStep {
 
   std::vector<Op> fdm_ops_, mpm_ops_;
   double fdm_dt_ = 0, mpm_dt_ = 0;
-  Totals fdm_totals_, mpm_totals_, fdm_outflow_, mpm_outflow_;
+  Totals fdm_totals_, mpm_totals_, fdm_outflow_, mpm_outflow_, dormant_outflow_;
   StepTraffic traffic_;
 };
 

@@ -82,7 +82,11 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   const bool dormant = scene.zones->mpm->activation_pressure.has_value();
   if (dormant)  // the audit's stand-in for the sleeping MPM zone (activation.hpp)
     *fdm.add_regions() =
-        make_region("dormant_zone", cells, layout.mpm_zone, {"rho", "momentum", "E"});
+        features.fdm_outflow
+            ? make_region(
+                  "dormant_zone", cells, layout.mpm_zone,
+                  {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"})
+            : make_region("dormant_zone", cells, layout.mpm_zone, {"rho", "momentum", "E"});
   fdm.set_output_dir((out / "fdm").string());
 
   auto& mpm = *messages[1].header.mutable_setup();
@@ -208,7 +212,8 @@ class Loop {
   void record_summary(const std::string& status, double wall) {
     const Totals now = current();
     // What left through open faces (0 from a solver that does not report it, v1.0).
-    const auto entries = audit(initial_, now, sum({step_.fdm_outflow(), step_.mpm_outflow()}));
+    const auto entries = audit(
+        initial_, now, sum({step_.fdm_outflow(), step_.mpm_outflow(), step_.dormant_outflow()}));
     gauges_.flush();
     summary_.set_detail("gauges", gauges_.listing());
     summary_.set_status(status);
@@ -220,7 +225,8 @@ class Loop {
                                   {"mpm", totals_json(step_.mpm_totals())},
                                   {"parcels", totals_json(step_.parcel_totals())},
                                   {"fdm_outflow", totals_json(step_.fdm_outflow())},
-                                  {"mpm_outflow", totals_json(step_.mpm_outflow())}});
+                                  {"mpm_outflow", totals_json(step_.mpm_outflow())},
+                                  {"dormant_zone_outflow", totals_json(step_.dormant_outflow())}});
     const auto& features = step_.features();
     summary_.set_detail("protocol", {{"fdm_face_crossing", features.fdm_face_crossing},
                                      {"fdm_outflow", features.fdm_outflow},

@@ -63,9 +63,8 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
 void CoupledGauges::add_to(Part& part, cosim::Message& request) {
   part.operation = -1;
   if (part.gauges.empty()) return;
-  auto& exchange = exchange_of(request);
-  part.operation = exchange.operations_size();
-  auto& op = *exchange.add_operations()->mutable_sample();
+  part.operation = exchange_of(request).operations_size();
+  auto& op = *next_operation(request, v1::Operation::kSample).mutable_sample();
   op.set_group(kGroup);
   for (const std::size_t g : part.gauges) {
     op.add_gauge_names(scene_.gauges[g].name);

@@ -5,7 +5,8 @@
 // carry the cell's pressure. So the particle gets, among the fluids the scene
 // fills (initial.material and the bodies' materials without strength), the
 // one whose EOS at the particle's density and specific internal energy comes
-// closest to the pressure of the FDM cell it comes from: air stays air, and
+// closest to the pressure of the FDM cell it is made in (k-w+1, on the zone's
+// side: the particle's own place, T (4-17)): air stays air, and
 // JWL detonation products (p ~ 0.3 rho e where air gives 0.4 rho e) stay
 // products. One fluid in the scene: always that one.
 

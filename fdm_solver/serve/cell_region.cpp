@@ -62,9 +62,10 @@ CellRegion make_cell_region(const cosim::v1::Region& region, const grid::Uniform
     cells.box.upper[a] = static_cast<int>(h);
   }
   if (faces) {
+    if (region.face_axis() > 2 || !grid.is_active(static_cast<int>(region.face_axis())))
+      reject(region, grid,
+             "face_axis " + std::to_string(region.face_axis()) + " is not an active axis");
     const auto axis = static_cast<int>(region.face_axis());
-    if (axis > 2 || !grid.is_active(axis))
-      reject(region, grid, "face_axis " + std::to_string(axis) + " is not an active axis");
     if (cells.box.upper[axis] - cells.box.lower[axis] != 1 || cells.box.lower[axis] == 0)
       reject(region, grid,
              "a FACES box spans one index [f, f + 1) along face_axis " + std::to_string(axis) +

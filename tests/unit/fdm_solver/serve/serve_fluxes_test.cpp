@@ -93,6 +93,20 @@ TEST(FdmServeFluxes, AFacesBoxOnADomainFaceIsRefusedNamingTheRule) {
   EXPECT_THAT(fdm.stop_reason(), HasSubstr("ERROR_CODE_UNKNOWN_REGION"));
 }
 
+// A face_axis past int's range (a bad peer) or an inactive axis is refused, not
+// read as a negative index.
+TEST(FdmServeFluxes, AFaceAxisOutOfRangeOrInactiveIsRefused) {
+  for (const std::uint32_t axis : {0xFFFFFFFFu, 0x80000000u, 3u, 1u}) {
+    ServedFdm fdm;
+    auto region = faces_box("face", 0, {kFace}, {kFace + 1});
+    region.set_face_axis(axis);
+    const auto text = fdm.refusal(setup(sod_text(100), {region}));
+    EXPECT_THAT(text, AllOf(HasSubstr("ERROR_CODE_UNKNOWN_REGION"),
+                            HasSubstr("face_axis " + std::to_string(axis) + " is not an active")))
+        << axis;
+  }
+}
+
 TEST(FdmServeFluxes, CrossedAmountsOnACellsRegionAreRefused) {
   ServedFdm fdm;
   const auto text =
