@@ -165,6 +165,7 @@ void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::In
                             static_cast<std::size_t>(hi[2] - lo[2]);
   out.mass.assign(nodes, 0.0);
   out.momentum.assign(3 * nodes, 0.0);
+  out.internal_energy.assign(nodes, 0.0);
   out.reaching.clear();
   const auto& ps = particles_;
   dispatch_stencil(
@@ -229,6 +230,7 @@ void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::In
             axis_weights<kWidth>(ps.position[a][p], a, ((kMask >> a) & 1) != 0, geometry_,
                                  half_width[a], ax[a]);
           const double m = ps.mass[p];
+          const double e = ps.specific_internal_energy[p];
           const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
           for (int k = 0; k < kExtent[2]; ++k) {
             const int nk = ax[2].first + k - lo[2];
@@ -244,6 +246,7 @@ void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::In
                     static_cast<std::size_t>((ni * (hi[1] - lo[1]) + nj) * (hi[2] - lo[2]) + nk);
                 const double wm = ax[0].weight[i] * wyz * m;
                 out.mass[n] += wm;
+                out.internal_energy[n] += wm * e;
                 for (int a = 0; a < 3; ++a) out.momentum[3 * n + a] += wm * v[a];
               }
             }

@@ -103,6 +103,8 @@ struct NodeState {
 struct NodeBoxMap {
   std::vector<double> mass;      ///< m_I (2-12) per node [kg]
   std::vector<double> momentum;  ///< p_I (2-9), 3 per node [kg m/s]
+  /// e_I = sum_p N_Ip m_p e_p, the particles' internal energy mapped as (2-12) [J]
+  std::vector<double> internal_energy;
   /// The particles whose stencil reaches the box, in index order.
   std::vector<std::int32_t> reaching;
   std::vector<std::int32_t> by_colour;  ///< scratch: `reaching` in summation order

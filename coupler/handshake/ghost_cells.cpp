@@ -27,6 +27,26 @@ std::vector<std::size_t> corner_nodes(const IndexBox<Dim>& cells, const IndexBox
   return corners;
 }
 
+template <int Dim>
+std::vector<double> corner_support(const IndexBox<Dim>& cells, const Index<Dim>& domain_cells) {
+  cells.check("ghost cells");
+  std::vector<double> support(cells.count());
+  for (std::size_t c = 0; c < cells.count(); ++c) {
+    const Index<Dim> cell = cells.at(c);
+    double sum = 0;
+    for (int q = 0; q < kCorners<Dim>; ++q) {
+      double share = 1;  // of the node's volume V_c inside the domain
+      for (int a = 0; a < Dim; ++a) {
+        const std::int64_t node = cell[a] + ((q >> a) & 1);
+        if (node == 0 || node == domain_cells[a]) share *= 0.5;
+      }
+      sum += share / kCorners<Dim>;
+    }
+    support[c] = sum;
+  }
+  return support;
+}
+
 void sum_internal_energy(std::span<const std::size_t> cell_of_particle,
                          std::span<const double> internal_energy, std::span<double> cell_energy) {
   require_length(internal_energy.size(), cell_of_particle.size(), "T (4-3) particles",
@@ -43,11 +63,13 @@ void sum_internal_energy(std::span<const std::size_t> cell_of_particle,
 
 template <int Dim>
 void fill_ghost_cells(const GhostSource<Dim>& source, std::span<const std::size_t> corners,
-                      double cell_volume, const CellOutputs<Dim>& ghost) {
+                      std::span<const double> support, double cell_volume,
+                      const CellOutputs<Dim>& ghost) {
   const std::size_t n = ghost.size();
   require_lengths(ghost, n, "ghost cells");
   require_length(source.cell_internal_energy.size(), n, "ghost cells", "internal_energy");
   require_length(corners.size(), n * kCorners<Dim>, "ghost cells", "corner list");
+  require_length(support.size(), n, "ghost cells", "corner support");
   require_length(source.node_momentum.size(), source.node_mass.size(), "ghost nodes", "momentum");
   require(cell_volume > 0, "ghost cells", "cell_volume", cell_volume, "> 0");
   for (const std::size_t node : corners)
@@ -64,10 +86,11 @@ void fill_ghost_cells(const GhostSource<Dim>& source, std::span<const std::size_
       momentum += weight * source.node_momentum[node];  // T (4-2)
     }
     if (!(mass > 0)) return 1;
-    ghost.rho[c] = mass / cell_volume;           // T (4-4)
-    ghost.momentum[c] = momentum / cell_volume;  // T (4-5): ρ_c p_c / m_c
-    ghost.energy[c] = (source.cell_internal_energy[c] + 0.5 * momentum.squaredNorm() / mass) /
-                      cell_volume;  // T (4-6)
+    const double volume = support[c] * cell_volume;  // the corner nodes' volume in the domain
+    ghost.rho[c] = mass / volume;                    // T (4-4)
+    ghost.momentum[c] = momentum / volume;           // T (4-5): ρ_c p_c / m_c
+    ghost.energy[c] =
+        (source.cell_internal_energy[c] + 0.5 * momentum.squaredNorm() / mass) / volume;  // T (4-6)
     return 0;
   });
   if (bad == 0) return;
@@ -84,8 +107,9 @@ void fill_ghost_cells(const GhostSource<Dim>& source, std::span<const std::size_
 
 #define MPFD_INSTANTIATE_GHOST(Dim)                                                                \
   template std::vector<std::size_t> corner_nodes<Dim>(const IndexBox<Dim>&, const IndexBox<Dim>&); \
+  template std::vector<double> corner_support<Dim>(const IndexBox<Dim>&, const Index<Dim>&);       \
   template void fill_ghost_cells<Dim>(const GhostSource<Dim>&, std::span<const std::size_t>,       \
-                                      double, const CellOutputs<Dim>&);
+                                      std::span<const double>, double, const CellOutputs<Dim>&);
 MPFD_INSTANTIATE_GHOST(1)
 MPFD_INSTANTIATE_GHOST(2)
 MPFD_INSTANTIATE_GHOST(3)

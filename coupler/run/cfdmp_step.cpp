@@ -72,6 +72,9 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
   ghost_nodes_ = to_kernel_box<Dim>(layout.ghost_nodes, layout);
   deposit_box_ = to_kernel_box<Dim>(layout.deposit_cells, layout);
   corners_ = handshake::corner_nodes(ghost_cells_, ghost_nodes_);
+  handshake::Index<Dim> domain_cells{};
+  for (int k = 0; k < Dim; ++k) domain_cells[k] = d.cells[layout.active[k]];
+  corner_support_ = handshake::corner_support<Dim>(ghost_cells_, domain_cells);
   const std::size_t faces = strip_layout_.face_cells();
   outer_in_deposit_.resize(faces);
   for (std::size_t t = 0; t < faces; ++t) {
@@ -274,7 +277,8 @@ void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm) {
   energy.resize(n);
   momentum.resize(n);
   handshake::fill_ghost_cells<Dim>({ghost_node_mass_, ghost_node_momentum_, ghost_cell_energy_},
-                                   corners_, geometry_.cell_volume, {rho, momentum, energy});
+                                   corners_, corner_support_, geometry_.cell_volume,
+                                   {rho, momentum, energy});
   cosim::add_array(fdm, {"ghost_cells", "rho", {}, "kg/m^3"}, std::span<const double>(rho));
   cosim::add_array(fdm, {"ghost_cells", "momentum", {n, 3}, "kg/(m^2*s)"},
                    to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));

@@ -133,6 +133,7 @@ class CfdmpStep {
   handshake::IndexBox<Dim> ghost_nodes_;
   handshake::IndexBox<Dim> deposit_box_;
   std::vector<std::size_t> corners_;
+  std::vector<double> corner_support_;  // Σ N_Ic s_I per ghost cell (ghost_cells.hpp)
   std::vector<std::size_t>
       outer_in_deposit_;  ///< per face cell: its outer cell's place in deposit_cells
   std::vector<std::size_t> face_in_export_;  ///< per face cell: its place in coupling_face

@@ -1,6 +1,5 @@
 #include "mpm_solver/serve/node_transfer.hpp"
 
-#include <cmath>
 #include <cstring>
 
 #include "cosim/arrays.hpp"
@@ -52,34 +51,40 @@ void check_apply_array(const ZoneRegion& region, const cosim::v1::ArrayDescripto
                " components), got " + std::to_string(count));
 }
 
-/// Sum of m_p e_p per cell of the region's node box, in box C order, over the
-/// particles that reach the box (a particle in one of its cells reaches it).
+/// e_c of T (4-3) per cell of the region's node box, in box C order: the
+/// nodal internal energies e_I = sum_p N_Ip m_p e_p at the cell centre, with the
+/// weights N_Ic = 2^-Dim of the nodal mass and momentum (4-1), (4-2). T sums the
+/// particles inside the cell; that is a different support from (4-1): a cell
+/// whose particles had left while its corner nodes kept mass from its
+/// neighbours' got e_c = 0, p = 0 (the 2D blast, docs/coupler.md), and the
+/// ratio e_c / m_c jumped tenfold between neighbours. With one support
+/// e_c / m_c is a mass-weighted mean of the particles' e_p.
 std::vector<double> cell_internal_energy(const MpmSolver& solver, const ZoneRegion& region,
-                                         std::span<const std::int32_t> reaching) {
+                                         std::span<const double> node_energy) {
   const auto& g = solver.grid();
-  grid::Index3 lo = region.lo, hi = region.hi, extent{};
+  grid::Index3 nodes{}, cells{};
+  int corners = 1;
   for (int a = 0; a < 3; ++a) {
-    if (g.is_active(a)) --hi[a];
-    extent[a] = hi[a] - lo[a];
+    nodes[a] = region.hi[a] - region.lo[a];
+    cells[a] = g.is_active(a) ? nodes[a] - 1 : 1;
+    if (g.is_active(a)) corners *= 2;
   }
+  const double weight = 1.0 / corners;  // N_Ic at the cell centre
   std::vector<double> energy(region.cell_count(g), 0.0);
-  const ParticleSet& ps = solver.particles();
-  for (const std::int32_t index : reaching) {
-    const auto p = static_cast<std::size_t>(index);
-    grid::Index3 cell{};
-    bool inside = true;
-    for (int a = 0; a < 3 && inside; ++a) {
-      cell[a] =
-          g.is_active(a)
-              ? static_cast<int>(std::floor((ps.position[a][p] - g.origin()[a]) / g.spacing()[a]))
-              : 0;
-      inside = cell[a] >= lo[a] && cell[a] < hi[a];
-    }
-    if (!inside) continue;
-    const std::size_t n = static_cast<std::size_t>((cell[0] - lo[0]) * extent[1] * extent[2] +
-                                                   (cell[1] - lo[1]) * extent[2] + cell[2] - lo[2]);
-    energy[n] += ps.mass[p] * ps.specific_internal_energy[p];
-  }
+  for (int i = 0; i < cells[0]; ++i)
+    for (int j = 0; j < cells[1]; ++j)
+      for (int k = 0; k < cells[2]; ++k) {
+        double sum = 0.0;
+        for (int q = 0; q < 8; ++q) {
+          const int di = q & 1, dj = (q >> 1) & 1, dk = (q >> 2) & 1;
+          if ((di != 0 && !g.is_active(0)) || (dj != 0 && !g.is_active(1)) ||
+              (dk != 0 && !g.is_active(2)))
+            continue;
+          sum += node_energy[static_cast<std::size_t>(((i + di) * nodes[1] + j + dj) * nodes[2] +
+                                                      k + dk)];
+        }
+        energy[static_cast<std::size_t>((i * cells[1] + j) * cells[2] + k)] = weight * sum;
+      }
   return energy;
 }
 
@@ -133,7 +138,7 @@ std::uint64_t export_node_region(const MpmSolver& solver, const ZoneRegion& regi
   for (const auto& name : names) {
     if (name == "internal_energy") {
       cosim::add_array(reply, {region.name, name, {}, "J"},
-                       cell_internal_energy(solver, region, map.reaching));
+                       cell_internal_energy(solver, region, map.internal_energy));
     } else if (name == "mass") {
       cosim::add_array(reply, {region.name, name, {}, "kg"}, std::span<const double>(map.mass));
     } else {

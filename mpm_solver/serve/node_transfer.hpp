@@ -23,8 +23,9 @@ void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
 /// Maps the particles that reach the region to its nodes first
 /// (MpmSolver::map_particles_to_node_box into `map`, the zone's scratch), then
 /// appends one array per asked quantity (none asked: the region's): mass,
-/// momentum of each node, and internal_energy, sum of m_p e_p over the
-/// particles in each cell of ZoneRegion::cell_count [J]. Returns the node count.
+/// momentum of each node, and internal_energy of each cell of
+/// ZoneRegion::cell_count, the nodal sum_p N_Ip m_p e_p at the cell centre
+/// (T (4-3) with the support of (4-1)) [J]. Returns the node count.
 std::uint64_t export_node_region(const MpmSolver& solver, const ZoneRegion& region,
                                  const cosim::v1::ExportRegion& request, NodeBoxMap& map,
                                  cosim::Message& reply);
