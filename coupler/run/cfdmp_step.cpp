@@ -138,19 +138,11 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
     fdm_ops_.push_back(Op::export_face);
   }
   if (plan.audit) {
-    if (features_.fdm_outflow)
-      add_export(fdm, "fdm_owned",
-                 {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"});
-    else
-      add_export(fdm, "fdm_owned", {"rho", "momentum", "E"});
+    add_audit_export(fdm, "fdm_owned");
     fdm_ops_.push_back(Op::export_owned);
   }
   if (!plan.mpm && plan.audit) {
-    if (features_.fdm_outflow)
-      add_export(fdm, "dormant_zone",
-                 {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"});
-    else
-      add_export(fdm, "dormant_zone", {"rho", "momentum", "E"});
+    add_audit_export(fdm, "dormant_zone");
     fdm_ops_.push_back(Op::export_dormant);
   }
   add_propose_dt(fdm);
@@ -197,6 +189,16 @@ void CfdmpStep<Dim>::add_face_fluxes(const handshake::Amounts<Dim>& returned) {
     handshake::accumulate_face_fluxes<Dim>(strip, strip_layout_, geometry_, dt_last_, parcels_,
                                            returned);
   flux_due_ = false;
+}
+
+template <int Dim>
+void CfdmpStep<Dim>::add_audit_export(cosim::Message& fdm, const char* region) const {
+  // The contents, and what left through the region's domain faces (v1.1) when offered.
+  if (features_.fdm_outflow)
+    add_export(fdm, region,
+               {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"});
+  else
+    add_export(fdm, region, {"rho", "momentum", "E"});
 }
 
 template <int Dim>

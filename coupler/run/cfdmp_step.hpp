@@ -121,6 +121,7 @@ class CfdmpStep {
   [[nodiscard]] Totals cell_totals(const cosim::Message& reply, const char* region,
                                    std::size_t count) const;
   void read_crossed(const cosim::Message& reply);
+  void add_audit_export(cosim::Message& fdm, const char* region) const;
   void add_face_fluxes(const handshake::Amounts<Dim>& returned);
 
   const config::Scene& scene_;

@@ -67,12 +67,15 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
       make_region("strip_cells", cells, layout.strip_cells, {"rho", "momentum", "E", "pressure"});
   *fdm.add_regions() =
       make_region("deposit_cells", cells, layout.deposit_cells, {"rho", "momentum", "E"});
-  *fdm.add_regions() =
-      features.fdm_outflow
-          ? make_region(
-                "fdm_owned", cells, layout.fdm_owned,
-                {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"})
-          : make_region("fdm_owned", cells, layout.fdm_owned, {"rho", "momentum", "E"});
+  // Audit regions: contents, and what left through their domain faces (v1.1) when offered.
+  const auto audit_region = [&](std::string_view name, const WireBox& box) {
+    auto region = make_region(name, cells, box, {"rho", "momentum", "E"});
+    if (features.fdm_outflow)
+      for (const char* q : {"outflow_mass", "outflow_momentum", "outflow_energy"})
+        region.add_quantities(q);
+    return region;
+  };
+  *fdm.add_regions() = audit_region("fdm_owned", layout.fdm_owned);
   if (features.fdm_face_crossing) {  // v1.1 (proto §14)
     auto& face = *fdm.add_regions();
     face = make_region("coupling_face", v1::REGION_KIND_FACES, layout.coupling_face,
@@ -81,12 +84,7 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   }
   const bool dormant = scene.zones->mpm->activation_pressure.has_value();
   if (dormant)  // the audit's stand-in for the sleeping MPM zone (activation.hpp)
-    *fdm.add_regions() =
-        features.fdm_outflow
-            ? make_region(
-                  "dormant_zone", cells, layout.mpm_zone,
-                  {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"})
-            : make_region("dormant_zone", cells, layout.mpm_zone, {"rho", "momentum", "E"});
+    *fdm.add_regions() = audit_region("dormant_zone", layout.mpm_zone);
   fdm.set_output_dir((out / "fdm").string());
 
   auto& mpm = *messages[1].header.mutable_setup();
