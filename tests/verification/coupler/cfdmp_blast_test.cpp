@@ -127,8 +127,8 @@ TEST(CfdmpBlast, Fast_gas_charge_gauges_agree_across_the_zone_face) {
   const auto yaml = replaced(read_text(kConfigs + "cfdmp_blast_2d_coarse.yaml"),
                              "    material: tnt\n", "    material: air\n");
   const auto c = run_both("gas", yaml);
-  // Measured: p1 54.43 / p2 52.67 MPa (-3.2 %), arrival 17.68 / 18.59 us
-  // (0.91 us; h / U = 1.19 us); pure FDM at p2 54.21 MPa (CFDMP -2.8 %), 17.68 us.
+  // Measured: p1 54.44 / p2 52.54 MPa (-3.5 %), arrival 17.68 / 18.07 us
+  // (0.39 us; h / U = 1.19 us); pure FDM at p2 54.21 MPa (CFDMP -3.1 %), 17.68 us.
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
@@ -141,12 +141,12 @@ TEST(CfdmpBlast, Fast_gas_charge_gauges_agree_across_the_zone_face) {
 
 TEST(CfdmpBlast, Fast_tnt_charge_gauges_agree_across_the_zone_face) {
   const auto c = run_both("tnt", read_text(kConfigs + "cfdmp_blast_2d_coarse.yaml"));
-  // Measured: p1 51.23 / p2 51.05 MPa (-0.35 %), arrival 15.71 / 16.82 us
-  // (1.11 us = 1.01 h / U, h / U = 1.10 us); pure FDM at p2 51.82 MPa (CFDMP
-  // -1.5 %), 15.73 us. Before the injected particles' material was chosen by
+  // Measured: p1 51.27 / p2 51.25 MPa (-0.04 %), arrival 15.70 / 16.27 us
+  // (0.57 us = 0.52 h / U, h / U = 1.10 us); pure FDM at p2 51.82 MPa (CFDMP
+  // -1.1 %), 15.73 us. Before the injected particles' material was chosen by
   // pressure (all air), p2 read 64.69 MPa (+26 %).
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
-  EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), 1.25 * c.cell_travel);
+  EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
             0.05);
   EXPECT_LT(relative(c.fdm_zone.peak_overpressure, c.pure_fdm_at_fdm_point.peak_overpressure),
@@ -157,12 +157,12 @@ TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_agree) {
   const auto yaml = replaced(read_text(kConfigs + "cfdmp_blast_2d.yaml"), "    material: tnt\n",
                              "    material: air\n");
   const auto c = run_both("full-gas", yaml);
-  // Measured (h = 2 mm, 161 s on one loaded core): p1 53.35 / p2 47.27 MPa
-  // (-11.4 %), arrival 17.05 / 17.27 us (0.22 us; h / U = 0.45 us); pure FDM
-  // at p2 53.05 MPa. The shock itself agrees (p1 23.0 MPa at 18.4 us, p2 21.5 at
-  // 17.7 us); the window's peak is the charge gas arriving behind it at 60 us,
-  // which the MPM zone holds ~11 % lower on this grid (3 % at h = 5 mm): the
-  // thesis's 5 % is not met here (docs/coupler.md, V6).
+  // Measured (h = 2 mm, 12 s): p1 52.86 / p2 48.10 MPa (-9.0 %), arrival
+  // 17.05 / 17.16 us (0.11 us; h / U = 0.45 us); pure FDM at p2 53.05 MPa. The
+  // shock itself agrees; the window's peak is the charge gas arriving behind it
+  // at 60 us, which the MPM zone holds ~9 % lower on this grid (3.5 % at
+  // h = 5 mm): the thesis's 5 % is not met here, so 15 % is asserted (open,
+  // docs/coupler.md, V6).
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.15);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
@@ -171,9 +171,9 @@ TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_agree) {
 
 TEST(CfdmpBlast, Full_thesis_grid_tnt_charge_gauges_agree) {
   const auto c = run_both("full-tnt", read_text(kConfigs + "cfdmp_blast_2d.yaml"));
-  // Measured (h = 2 mm, 270 s on one loaded core): p1 46.47 / p2 44.66 MPa
-  // (-3.9 %), arrival 15.35 / 15.65 us (0.30 us; h / U = 0.43 us); pure FDM
-  // p1 46.34, p2 46.28 MPa (CFDMP p2 -3.5 %).
+  // Measured (h = 2 mm, 26 s): p1 46.53 / p2 45.04 MPa (-3.2 %), arrival
+  // 15.34 / 15.53 us (0.19 us; h / U = 0.43 us); pure FDM p1 46.34, p2 46.28 MPa
+  // (CFDMP p2 -2.7 %).
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
