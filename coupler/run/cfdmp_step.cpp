@@ -260,11 +260,19 @@ void CfdmpStep<Dim>::add_deposit(cosim::Message& fdm) {
   removed_position_.clear();
   removed_velocity_.clear();
   if (traffic_.deposited_mass == 0.0) return;
-  cosim::add_array(fdm, {"deposit_cells", "rho", {}, "kg/m^3"}, std::span<const double>(rho));
-  cosim::add_array(fdm, {"deposit_cells", "momentum", {n, 3}, "kg/(m^2*s)"},
-                   to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
-  cosim::add_array(fdm, {"deposit_cells", "E", {}, "J/m^3"}, std::span<const double>(energy));
-  add_apply(fdm, "deposit_cells", v1::ApplyRegion::MODE_ADD);
+  add_cell_apply(fdm, "deposit_cells", v1::ApplyRegion::MODE_ADD);
+}
+
+template <int Dim>
+void CfdmpStep<Dim>::add_cell_apply(cosim::Message& fdm, const char* region,
+                                    v1::ApplyRegion::Mode mode) {
+  // The conserved densities in scratch_ (rho, momentum, energy), one entry per region cell.
+  const std::size_t n = scratch_.rho.size();
+  cosim::add_array(fdm, {region, "rho", {}, "kg/m^3"}, std::span<const double>(scratch_.rho));
+  cosim::add_array(fdm, {region, "momentum", {n, 3}, "kg/(m^2*s)"},
+                   to_wire_vectors<Dim>(scratch_.momentum, layout_, {0, 0, 0}, scratch_.wire));
+  cosim::add_array(fdm, {region, "E", {}, "J/m^3"}, std::span<const double>(scratch_.energy));
+  add_apply(fdm, region, mode);
   fdm_ops_.push_back(Op::apply);
 }
 
@@ -281,12 +289,7 @@ void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm) {
   handshake::fill_ghost_cells<Dim>({ghost_node_mass_, ghost_node_momentum_, ghost_cell_energy_},
                                    corners_, corner_support_, geometry_.cell_volume,
                                    {rho, momentum, energy});
-  cosim::add_array(fdm, {"ghost_cells", "rho", {}, "kg/m^3"}, std::span<const double>(rho));
-  cosim::add_array(fdm, {"ghost_cells", "momentum", {n, 3}, "kg/(m^2*s)"},
-                   to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
-  cosim::add_array(fdm, {"ghost_cells", "E", {}, "J/m^3"}, std::span<const double>(energy));
-  add_apply(fdm, "ghost_cells", v1::ApplyRegion::MODE_SET);
-  fdm_ops_.push_back(Op::apply);
+  add_cell_apply(fdm, "ghost_cells", v1::ApplyRegion::MODE_SET);
 }
 
 template <int Dim>

@@ -122,6 +122,7 @@ class CfdmpStep {
                                    std::size_t count) const;
   void read_crossed(const cosim::Message& reply);
   void add_audit_export(cosim::Message& fdm, const char* region) const;
+  void add_cell_apply(cosim::Message& fdm, const char* region, cosim::v1::ApplyRegion::Mode mode);
   void add_face_fluxes(const handshake::Amounts<Dim>& returned);
 
   const config::Scene& scene_;

@@ -153,7 +153,7 @@ TEST(CfdmpBlast, Fast_tnt_charge_gauges_agree_across_the_zone_face) {
             0.01);
 }
 
-TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_agree) {
+TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_within_15_percent_thesis_5_open) {
   const auto yaml = replaced(read_text(kConfigs + "cfdmp_blast_2d.yaml"), "    material: tnt\n",
                              "    material: air\n");
   const auto c = run_both("full-gas", yaml);
