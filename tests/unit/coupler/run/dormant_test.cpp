@@ -20,18 +20,8 @@ namespace {
 // Air in a closed 1 m tube of 40 cells, FDM [0, 0.6], MPM [0.4, 1], w = 5 cells;
 // `pulse`: the first 0.25 m at 1.5e5 Pa (else 1e5 Pa everywhere), density 1.2.
 std::string tube(double threshold, bool pulse, double end = 1.0e-3) {
-  std::string text = "name: dormant_tube\ntime: {end: " + std::to_string(end) +
-                     ", cfl: 0.5}\n"
-                     "domain: {lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [40, 1, 1]}\n"
-                     "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
-                     "initial: {material: air, density: 1.2, pressure: 1.0e5}\n"
-                     "boundaries: {x_lower: wall, x_upper: wall}\n"
-                     "output: {interval: " +
-                     std::to_string(end / 2) +
-                     "}\nsolver: {method: cfdmp}\n"
-                     "zones:\n  fdm: {lower: [0, 0, 0], upper: [0.6, 0.01, 0.01]}\n"
-                     "  mpm: {lower: [0.4, 0, 0], upper: [1, 0.01, 0.01], activation_pressure: " +
-                     std::to_string(threshold) + "}\n  handshake_width: 5\n";
+  std::string text = testing::still_tube_scene(
+      "dormant_tube", end, ", activation_pressure: " + std::to_string(threshold));
   if (pulse)
     text +=
         "bodies:\n  - {name: pulse, material: air, density: 1.2, pressure: 1.5e5,\n"

@@ -18,6 +18,25 @@
 
 namespace mpfd::coupler::testing {
 
+/// The scene the stand-in is made for: air (1.2 kg/m^3, 1e5 Pa) in a closed
+/// 1 m tube of 40 cells, FDM [0, 0.6], MPM [0.4, 1], w = 5 cells, outputs at
+/// end / 2; `mpm_keys` (", key: value") are added to zones.mpm.
+inline std::string still_tube_scene(const std::string& name, double end,
+                                    const std::string& mpm_keys = "") {
+  return "name: " + name + "\ntime: {end: " + std::to_string(end) +
+         ", cfl: 0.5}\n"
+         "domain: {lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [40, 1, 1]}\n"
+         "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+         "initial: {material: air, density: 1.2, pressure: 1.0e5}\n"
+         "boundaries: {x_lower: wall, x_upper: wall}\n"
+         "output: {interval: " +
+         std::to_string(end / 2) +
+         "}\nsolver: {method: cfdmp}\n"
+         "zones:\n  fdm: {lower: [0, 0, 0], upper: [0.6, 0.01, 0.01]}\n"
+         "  mpm: {lower: [0.4, 0, 0], upper: [1, 0.01, 0.01]" +
+         mpm_keys + "}\n  handshake_width: 5\n";
+}
+
 struct StillMpm {
   double density = 1.2;
   double pressure = 1.0e5;
