@@ -11,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -78,5 +79,20 @@ class ChildProcess {
   bool running_ = true;
   int exit_code_ = -1;
 };
+
+/// `program serve` on `endpoint` (one thread, the given idle timeout), its log in
+/// a temporary file named after the program, `tag` and this process.
+inline std::unique_ptr<ChildProcess> start_serve(const std::string& program,
+                                                 const std::string& endpoint,
+                                                 const std::string& idle_seconds,
+                                                 const std::string& tag) {
+  const auto log = std::filesystem::temp_directory_path() /
+                   ("mpfd-" + std::filesystem::path(program).filename().string() + "-serve-" + tag +
+                    "-" + std::to_string(::getpid()) + ".log");
+  return std::make_unique<ChildProcess>(
+      std::vector<std::string>{program, "serve", "--endpoint", endpoint, "--idle-timeout",
+                               idle_seconds, "--threads", "1"},
+      log);
+}
 
 }  // namespace mpfd::testing

@@ -31,12 +31,7 @@ cosim::TransportOptions coupler_options() {
 std::unique_ptr<mpfd::testing::ChildProcess> start_solver(const std::string& endpoint,
                                                           const std::string& idle_seconds,
                                                           const std::string& tag) {
-  const auto log = std::filesystem::temp_directory_path() /
-                   ("mpfd-fdm-serve-" + tag + "-" + std::to_string(::getpid()) + ".log");
-  return std::make_unique<mpfd::testing::ChildProcess>(
-      std::vector<std::string>{MPFD_FDM_SOLVER, "serve", "--endpoint", endpoint, "--idle-timeout",
-                               idle_seconds, "--threads", "1"},
-      log);
+  return mpfd::testing::start_serve(MPFD_FDM_SOLVER, endpoint, idle_seconds, tag);
 }
 
 TEST(FdmServeProcess, TwentySodStepsOverIpcMatchTheSolverBitForBitAndShutdownExitsZero) {
