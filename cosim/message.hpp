@@ -13,7 +13,7 @@ namespace mpfd::cosim {
 /// The protocol major version this build speaks (mpfd.cosim.v1).
 inline constexpr std::uint32_t protocol_major = 1;
 /// The newest minor version of v1 this build understands.
-inline constexpr std::uint32_t protocol_minor = 1;
+inline constexpr std::uint32_t protocol_minor = 2;
 
 struct Message {
   v1::Header header;
