@@ -235,8 +235,9 @@ class Loop {
     clear_for_reuse(fdm_request_);
     clear_for_reuse(mpm_request_);
     step_.build(plan, fdm_request_, mpm_request_);
-    gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time, plan.mpm,
-                fdm_request_, mpm_request_);
+    gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time,
+                plan.mpm ? GaugeSamplers::owners : GaugeSamplers::fdm_only, fdm_request_,
+                mpm_request_);
     hub_.send_keeping_header("fdm", fdm_request_);
     if (plan.mpm) hub_.send_keeping_header("mpm", mpm_request_);
     auto replies = hub_.gather(peers());
