@@ -4,11 +4,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
+#include "common/core/require.hpp"
 #include "coupler/handoff/mpm_to_fdm.hpp"
 #include "coupler/handoff/placeholder.hpp"
 #include "coupler/handoff/sub_grid.hpp"
@@ -77,6 +79,12 @@ TEST_P(FluidSubGrid, MpmToFdmOnFluidSubGrid_PutsNothingInFsiCellsAndConservesToR
     for (int a = 0; a < 3; ++a)
       momentum_scale += std::abs(particles.mass[p] * particles.velocity[a][p]);
   constexpr double kTolerance = 1e-12;
+  double worst_momentum = 0.0;
+  for (int a = 0; a < 3; ++a)
+    worst_momentum = std::max(worst_momentum, std::abs(got.momentum[a] - sent.momentum[a]));
+  RecordProperty("relative_error_mass", shortest_text(std::abs(got.mass / sent.mass - 1.0)));
+  RecordProperty("relative_error_momentum", shortest_text(worst_momentum / momentum_scale));
+  RecordProperty("relative_error_energy", shortest_text(std::abs(got.energy / sent.energy - 1.0)));
   EXPECT_NEAR(got.mass, sent.mass, kTolerance * sent.mass);
   for (int a = 0; a < 3; ++a)
     EXPECT_NEAR(got.momentum[a], sent.momentum[a], kTolerance * momentum_scale) << "axis " << a;
