@@ -123,14 +123,18 @@ void Hub::send_error_to(const std::string& peer, v1::ErrorCode code, const std::
   }
 }
 
-void Hub::throw_timeout(std::string_view peer) const {
+void Hub::throw_timeout(std::string_view peer, std::chrono::milliseconds timeout) const {
   throw Error("solver '" + std::string(peer) + "' at " + endpoint_ + " did not answer within " +
-              seconds_text(options_.reply_timeout) + " (step " + std::to_string(step_) +
+              seconds_text(timeout) + " (step " + std::to_string(step_) +
               "); it has died, hung, or never connected");
 }
 
 Message Hub::receive_from(std::string_view peer) {
-  const auto deadline = Clock::now() + options_.reply_timeout;
+  return receive_from(peer, options_.reply_timeout);
+}
+
+Message Hub::receive_from(std::string_view peer, std::chrono::milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
   while (true) {
     auto queue = pending_.find(peer);
     if (queue != pending_.end() && !queue->second.empty()) {
@@ -139,7 +143,7 @@ Message Hub::receive_from(std::string_view peer) {
       return message;
     }
     const auto left = remaining(deadline);
-    if (left.count() == 0) throw_timeout(peer);
+    if (left.count() == 0) throw_timeout(peer, timeout);
     poll_into_pending(left);
   }
 }
@@ -151,7 +155,7 @@ std::vector<Message> Hub::gather(std::span<const std::string> peers) {
   for (const auto& peer : peers) {
     while (pending_[peer].empty()) {
       const auto left = remaining(deadline);
-      if (left.count() == 0) throw_timeout(peer);
+      if (left.count() == 0) throw_timeout(peer, options_.reply_timeout);
       poll_into_pending(left);
     }
     replies.push_back(std::move(pending_[peer].front()));

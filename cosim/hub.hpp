@@ -51,6 +51,9 @@ class Hub {
   /// The next message from `peer`, waiting at most reply_timeout. A reply with
   /// an Error body is thrown as mpfd::Error naming the peer.
   Message receive_from(std::string_view peer);
+  /// As receive_from(peer), waiting at most `timeout` (a whole-field handoff or
+  /// import commit may take longer than one step's reply_timeout).
+  Message receive_from(std::string_view peer, std::chrono::milliseconds timeout);
 
   /// One message from each of `peers`, in their order, within one reply_timeout.
   std::vector<Message> gather(std::span<const std::string> peers);
@@ -58,7 +61,7 @@ class Hub {
  private:
   void poll_into_pending(std::chrono::milliseconds budget);
   void send_error_to(const std::string& peer, v1::ErrorCode code, const std::string& text);
-  [[noreturn]] void throw_timeout(std::string_view peer) const;
+  [[noreturn]] void throw_timeout(std::string_view peer, std::chrono::milliseconds timeout) const;
 
   zmq::socket_t socket_;
   TransportOptions options_;

@@ -112,5 +112,29 @@ TEST(DeadPeer, SolverReportsACouplerThatStoppedSending) {
   EXPECT_LT(Clock::now() - start, reply_timeout + margin);
 }
 
+TEST(DeadPeer, ALongAnswerArrivesWithinAPerCallTimeoutLongerThanTheReplyTimeout) {
+  zmq::context_t context;
+  Hub hub(context, testing::unique_bind_endpoint(Transport::inproc), short_timeouts());
+  testing::SolverThread solver([&] {
+    Participant participant(context, hub.endpoint(), "fdm", short_timeouts());
+    participant.connect(v1::Hello{});
+    const Message request = participant.receive();
+    std::this_thread::sleep_for(3 * reply_timeout);  // a whole-field commit, say
+    Message done;
+    done.header.mutable_field_import_done()->set_transfer_id("h1");
+    participant.reply(request, std::move(done));
+    participant.receive();  // the Shutdown
+  });
+  const std::vector<std::string> peers{"fdm"};
+  hub.accept(peers, "run-long");
+  hub.send("fdm", request_dt());
+  const Message reply = hub.receive_from("fdm", 10 * reply_timeout);
+  EXPECT_EQ(reply.header.field_import_done().transfer_id(), "h1");
+  Message shutdown;
+  shutdown.header.mutable_shutdown();
+  hub.send("fdm", std::move(shutdown));
+  solver.join_and_rethrow();
+}
+
 }  // namespace
 }  // namespace mpfd::cosim

@@ -1,0 +1,68 @@
+#pragma once
+// Whole fields in chunks (proto/README.md §15, v1.2): the sender slices
+// region arrays into FieldChunk messages within a byte budget, the receiver
+// assembles them back and checks that every row arrives once and in order.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cosim/message.hpp"
+
+namespace mpfd::cosim {
+
+/// Splits whole fields into FieldChunk messages (README §15 rule 2). `fields` holds arrays with
+/// group = region, name = quantity (as an ExportRegion reply holds them); `names` lists the
+/// fields to send, each "<region>/<quantity>", in order. Every chunk carries one array (group =
+/// transfer_id, name = field) of at most max(1 row, max_chunk_bytes) bytes; a field of 0 rows
+/// still sends one chunk so that its shape arrives; the last chunk has last = true. Throws
+/// mpfd::Error naming a field absent from `fields` or a name without '/'.
+std::vector<Message> slice_into_chunks(const Message& fields, std::string_view transfer_id,
+                                       std::span<const std::string> names,
+                                       std::uint64_t max_chunk_bytes);
+
+/// Collects the FieldChunk messages of one transfer into whole fields (README §15 rules 2–3).
+class FieldAssembly {
+ public:
+  explicit FieldAssembly(std::string transfer_id);
+
+  /// Adds one chunk (a Message whose body is a FieldChunk). Throws ProtocolError{MALFORMED}
+  /// naming the field and what was expected on a gap or overlap of rows, a change of dtype,
+  /// shape or row width, a chunk of another transfer, a chunk out of order or after `last`.
+  void add(const Message& chunk);
+
+  [[nodiscard]] const std::string& transfer_id() const { return transfer_id_; }
+  /// The chunk with last = true has arrived (every field is then whole).
+  [[nodiscard]] bool complete() const { return complete_; }
+  /// The number of chunks added so far.
+  [[nodiscard]] std::uint32_t chunks() const { return next_chunk_; }
+
+  /// The assembled fields as one Message: arrays with group = region, name = quantity, the
+  /// field's full shape, dtype and units, readable with view_array like an ExportRegion reply.
+  /// Throws ProtocolError{MALFORMED} unless complete. Leaves the assembly empty.
+  [[nodiscard]] Message take();
+
+ private:
+  struct Field {
+    std::string region;
+    std::string quantity;
+    v1::DType dtype = v1::DTYPE_UNSPECIFIED;
+    std::string units;
+    std::vector<std::uint64_t> shape;
+    std::uint64_t row_bytes = 0;
+    std::uint64_t rows = 0;  // received so far
+    std::vector<std::byte> bytes;
+  };
+
+  Field& start_field(const v1::FieldChunk& body, const v1::ArrayDescriptor& array);
+  void check_whole(const Field& field) const;
+
+  std::string transfer_id_;
+  std::vector<Field> fields_;
+  std::uint32_t next_chunk_ = 0;
+  bool complete_ = false;
+};
+
+}  // namespace mpfd::cosim
