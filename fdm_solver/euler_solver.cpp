@@ -517,8 +517,8 @@ void EulerSolver::check_grid_of(const EulerState& state, const char* what) const
   if (state.grid.cells() != state_.grid.cells() ||
       std::any_of(state.u.begin(), state.u.end(),
                   [&](const std::vector<double>& v) { return v.size() != cells; }))
-    throw Error(std::string("fdm_solver: ") + what +
-                " state does not match the solver's grid of " + std::to_string(cells) + " cells");
+    throw Error(std::string("fdm_solver: ") + what + " state does not match the solver's grid of " +
+                std::to_string(cells) + " cells");
 }
 
 void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet> tracers) {

@@ -140,7 +140,7 @@ class EulerSolver {
   SolverOptions options_;
   std::vector<eos::AnyEos> eos_;
   ActiveBox box_;
-  std::vector<Pencil> pencils_;             // one per thread
+  std::vector<Pencil> pencils_;           // one per thread
   std::vector<double> still_line_limit_;  // min dx/(|u|+c) of each x-line at the start/import
   // min dx/(|u|+c) over the grid after the last step, found in its last
   // sweep; empty where unknown (before a step, after writes from outside).
