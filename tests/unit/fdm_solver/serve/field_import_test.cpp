@@ -37,6 +37,10 @@ TEST(FdmFieldImport, ImportRoundTrip_ReproducesStateAndTracers) {
   ASSERT_NE(target->solver.tracker(), nullptr);
   EXPECT_EQ(StateImage(target->solver), StateImage(source->solver));
   EXPECT_EQ(done.header.field_import_done().stable_dt(), source->solver.stable_dt());
+  // Still cells stay skipped: the disturbed box is the charge's, not the grid.
+  EXPECT_EQ(target->solver.active_box().lower, source->solver.active_box().lower);
+  EXPECT_EQ(target->solver.active_box().upper, source->solver.active_box().upper);
+  EXPECT_LT(target->solver.active_box().cells(), kNx * kNy);
   for (int step = 0; step < 10; ++step) {
     const double dt = source->solver.stable_dt();
     ASSERT_EQ(target->solver.stable_dt(), dt) << "step " << step;
