@@ -136,6 +136,20 @@ TEST(FdmFieldImport, Commit_RefusesATracerOfAMaterialTheSceneLacks_StateUntouche
   EXPECT_EQ(target->solver.tracker(), nullptr);
 }
 
+TEST(FdmFieldImport, ImportStateThatFailsInTheTrackerChangesNothing) {
+  const auto source = transfer_zone();
+  advance_stable(*source, 2);
+  const auto target = transfer_zone(false);
+  const SolverImage before(target->solver);
+  const auto box = target->solver.active_box();
+  TracerSet tracers = source->solver.tracker()->tracers();
+  tracers.position[0].back() = -1.0;  // outside the grid: tracker_from_points refuses it
+  EXPECT_THROW(target->solver.import_state(source->solver.state(), tracers), Error);
+  EXPECT_EQ(SolverImage(target->solver), before);
+  EXPECT_EQ(target->solver.tracker(), nullptr);
+  EXPECT_EQ(target->solver.active_box().upper, box.upper);
+}
+
 TEST(FdmFieldImport, ImportDone_TotalsEqualEulerSolverTotals) {
   const auto source = transfer_zone();
   advance_stable(*source, 4);
