@@ -155,6 +155,12 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
     if (!q || !info(*q).writable)
       malformed(transfer, "field '" + field_name(array) +
                               "' cannot be imported; a CELLS region imports rho, momentum and E");
+    if (!region.declares(*q))
+      throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+                                 "FieldImportCommit '" + transfer + "': field '" +
+                                     field_name(array) + "' is not declared for region '" +
+                                     region.name + "' in Setup",
+                                 false);
     if (cells_region != nullptr && cells_region != &region)
       malformed(transfer, "fields of two CELLS regions, '" + cells_region->name + "' and '" +
                               region.name + "'; a CELLS import sets the whole grid once");

@@ -178,6 +178,30 @@ TEST(FdmFieldImport, CellsOnlyImportKeepsTheTrackersTracers) {
   EXPECT_EQ(target->solver.tracker()->tracers().position, tracers);
 }
 
+TEST(FdmFieldImport, TracersInsideTheImportedBoxAreReplaced_TheOthersKept) {
+  const auto source = transfer_zone();
+  advance_stable(*source, 4);
+  const auto target = transfer_zone();
+  const TracerRegion& corner = *target->tracer_region("corner_tracers");
+  const grid::UniformGrid& grid = target->solver.state().grid;
+  const auto inside = [&](const TracerSet& t, std::size_t n) {
+    return corner.holds(grid, {t.position[0][n], t.position[1][n], t.position[2][n]});
+  };
+  std::vector<double> expected_x;  // kept in order, then the imported ones in theirs
+  const TracerSet& own = target->solver.tracker()->tracers();
+  for (std::size_t n = 0; n < own.size(); ++n)
+    if (!inside(own, n)) expected_x.push_back(own.position[0][n]);
+  const TracerSet& sent = source->solver.tracker()->tracers();
+  for (std::size_t n = 0; n < sent.size(); ++n)
+    if (inside(sent, n)) expected_x.push_back(sent.position[0][n]);
+  (void)stream_fields(*source, *target, "c",
+                      {"all_cells/rho", "all_cells/momentum", "all_cells/E",
+                       "corner_tracers/position", "corner_tracers/material"},
+                      1 << 20);
+  (void)commit_import(*target, commit_request("c", true, 0.0));
+  EXPECT_EQ(target->solver.tracker()->tracers().position[0], expected_x);
+}
+
 TEST(FdmFieldImport, AChunkOfANewTransferDropsTheUnfinishedOne) {
   const auto source = transfer_zone();
   const auto target = transfer_zone(false);
@@ -186,7 +210,7 @@ TEST(FdmFieldImport, AChunkOfANewTransferDropsTheUnfinishedOne) {
   (void)stream_fields(*source, *target, "new", kStateFields, 1 << 20);
   EXPECT_THROW((void)commit_import(*target, commit_request("old", true, 0.0)),
                cosim::ProtocolError);
-  // The failed commit of "old" consumed nothing of "new"? It did not match: "new" is still pending.
+  // A commit of the dropped transfer is refused and leaves the pending "new" alone.
   ASSERT_TRUE(target->pending_import.has_value());
   (void)commit_import(*target, commit_request("new", true, 0.0));
   EXPECT_EQ(target->solver.state().u, source->solver.state().u);
