@@ -5,6 +5,7 @@
 
 #include "cosim/arrays.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "mpm_solver/material/solid_response.hpp"
 
 namespace mpfd::mpm {
 namespace {
@@ -15,7 +16,7 @@ struct GaugeQuantity {
   double (*read)(const ParticleSet&, std::size_t);
 };
 
-constexpr std::array<GaugeQuantity, 6> kQuantities = {{
+constexpr std::array<GaugeQuantity, 7> kQuantities = {{
     {"density", "kg/m^3", [](const ParticleSet& ps, std::size_t p) { return ps.density[p]; }},
     {"pressure", "Pa", [](const ParticleSet& ps, std::size_t p) { return ps.pressure[p]; }},
     {"velocity_x", "m/s", [](const ParticleSet& ps, std::size_t p) { return ps.velocity[0][p]; }},
@@ -23,6 +24,9 @@ constexpr std::array<GaugeQuantity, 6> kQuantities = {{
     {"velocity_z", "m/s", [](const ParticleSet& ps, std::size_t p) { return ps.velocity[2][p]; }},
     {"specific_internal_energy", "J/kg",
      [](const ParticleSet& ps, std::size_t p) { return ps.specific_internal_energy[p]; }},
+    // The structure's yield measure (V5): sqrt(3/2 s:s) of the deviator.
+    {"mises_stress", "Pa",
+     [](const ParticleSet& ps, std::size_t p) { return von_mises_stress(ps.deviator(p)); }},
 }};
 
 const GaugeQuantity& find(const std::string& name) {

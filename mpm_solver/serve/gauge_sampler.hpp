@@ -10,7 +10,8 @@
 namespace mpfd::mpm {
 
 /// Appends one F64 [n_gauges] array per quantity (density, pressure,
-/// velocity_x, velocity_y, velocity_z, specific_internal_energy), group
+/// velocity_x, velocity_y, velocity_z, specific_internal_energy, and
+/// mises_stress [Pa], the von Mises stress of the particle's deviator), group
 /// request.group(), to `reply`; returns n_gauges. `positions` holds three
 /// coordinates per gauge. Throws cosim::ProtocolError{MALFORMED} naming the
 /// quantity or the position count, or when the zone holds no particle.

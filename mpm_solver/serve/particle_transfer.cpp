@@ -44,31 +44,20 @@ bool has_array(const cosim::Message& request, const std::string& group, const st
   return false;
 }
 
-/// The region's box of cells in metres on the active axes, computed once per scan.
+/// Whether each particle lies in a PARTICLES region's box, read from the particle set.
 class RegionBounds {
  public:
-  RegionBounds(const MpmSolver& solver, const ZoneRegion& region) : ps_(solver.particles()) {
-    const auto& g = solver.grid();
-    for (int a = 0; a < 3; ++a) {
-      active_[a] = g.is_active(a);
-      lower_[a] = g.origin()[a] + region.lo[a] * g.spacing()[a];
-      upper_[a] = g.origin()[a] + region.hi[a] * g.spacing()[a];
-    }
-  }
+  RegionBounds(const MpmSolver& solver, const ZoneRegion& region)
+      : ps_(solver.particles()), extent_(region, solver.grid()) {}
   /// Whether particle p lies in the box (active axes only).
   [[nodiscard]] bool contain(std::size_t p) const {
-    for (std::size_t a = 0; a < 3; ++a) {
-      if (!active_[a]) continue;
-      const double x = ps_.position[a][p];
-      if (!(x >= lower_[a] && x < upper_[a])) return false;
-    }
-    return true;
+    const double x[3] = {ps_.position[0][p], ps_.position[1][p], ps_.position[2][p]};
+    return extent_.contains(x);
   }
 
  private:
   const ParticleSet& ps_;
-  bool active_[3] = {};
-  double lower_[3] = {}, upper_[3] = {};
+  RegionExtent extent_;
 };
 
 void append_batch(const ParticleBatch& batch, const std::string& group, cosim::Message& reply) {
@@ -92,21 +81,27 @@ void append_batch(const ParticleBatch& batch, const std::string& group, cosim::M
 
 }  // namespace
 
+ParticleBatch read_particle_batch(const cosim::Message& message, const std::string& operation,
+                                  const std::string& group) {
+  std::size_t n = 0;
+  ParticleBatch batch;
+  batch.id = read_array<std::uint64_t>(message, operation, group, "id", 1, n);
+  batch.position = read_array<double>(message, operation, group, "position", 3, n);
+  batch.velocity = read_array<double>(message, operation, group, "velocity", 3, n);
+  batch.mass = read_array<double>(message, operation, group, "mass", 1, n);
+  batch.volume = read_array<double>(message, operation, group, "volume", 1, n);
+  batch.internal_energy = read_array<double>(message, operation, group, "internal_energy", 1, n);
+  batch.material = read_array<std::uint32_t>(message, operation, group, "material", 1, n);
+  if (has_array(message, group, "stress"))
+    batch.stress = read_array<double>(message, operation, group, "stress", kVoigt, n);
+  return batch;
+}
+
 std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticles& op,
                                const cosim::Message& request) {
   const std::string& group = op.group();
   const std::string operation = "InjectParticles";
-  std::size_t n = 0;
-  ParticleBatch batch;
-  batch.id = read_array<std::uint64_t>(request, operation, group, "id", 1, n);
-  batch.position = read_array<double>(request, operation, group, "position", 3, n);
-  batch.velocity = read_array<double>(request, operation, group, "velocity", 3, n);
-  batch.mass = read_array<double>(request, operation, group, "mass", 1, n);
-  batch.volume = read_array<double>(request, operation, group, "volume", 1, n);
-  batch.internal_energy = read_array<double>(request, operation, group, "internal_energy", 1, n);
-  batch.material = read_array<std::uint32_t>(request, operation, group, "material", 1, n);
-  if (has_array(request, group, "stress"))
-    batch.stress = read_array<double>(request, operation, group, "stress", kVoigt, n);
+  const ParticleBatch batch = read_particle_batch(request, operation, group);
   try {
     solver.inject_particles(batch);
   } catch (const cosim::ProtocolError&) {
@@ -114,7 +109,7 @@ std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticl
   } catch (const Error& error) {
     malformed(operation + " group '" + group + "': " + error.what());
   }
-  return n;
+  return batch.size();
 }
 
 std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
@@ -134,7 +129,7 @@ std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
       leaving += flags[p];
     }
     if (leaving == 0) {  // the usual step: nothing to collect, no second scan
-      append_batch(ParticleBatch{}, op.group(), reply);
+      if (!op.discard()) append_batch(ParticleBatch{}, op.group(), reply);
       return 0;
     }
   } else {
@@ -152,7 +147,7 @@ std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
     }
   }
   const ParticleBatch removed = solver.remove_particles(flags);
-  append_batch(removed, op.group(), reply);
+  if (!op.discard()) append_batch(removed, op.group(), reply);
   return removed.size();
 }
 

@@ -7,12 +7,21 @@
 // yy, zz, yz, xz, xy), burn_fraction F64 [n].
 
 #include <cstdint>
+#include <string>
 
 #include "cosim/message.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/serve/zone_region.hpp"
 
 namespace mpfd::mpm {
+
+/// The arrays `group`/{id, position, velocity, mass, volume, internal_energy,
+/// material[, stress]} of `message` as a batch. Throws
+/// cosim::ProtocolError{MALFORMED} naming the operation, the group and the
+/// array that is missing or has the wrong dtype or size.
+[[nodiscard]] ParticleBatch read_particle_batch(const cosim::Message& message,
+                                                const std::string& operation,
+                                                const std::string& group);
 
 /// Injects the particles of arrays `group`/{id, position, velocity, mass,
 /// volume, internal_energy, material[, stress]}. Returns the count. Throws
@@ -24,7 +33,8 @@ std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticl
 /// Removes the particles listed in `group`/id (left_region empty) or every
 /// particle outside the PARTICLES region `left_region`, and appends their
 /// state as arrays of group `group` (id, position, velocity, mass, volume,
-/// internal_energy, material, stress). Returns the count. Throws
+/// internal_energy, material, stress), unless op.discard (v1.2: the count
+/// only; another solver owns them now). Returns the count. Throws
 /// cosim::ProtocolError{MALFORMED} for an id array that is missing, not U64, or
 /// names a particle the zone does not hold, UNKNOWN_REGION for left_region.
 std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,

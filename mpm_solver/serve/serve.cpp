@@ -3,12 +3,15 @@
 #include <unistd.h>
 
 #include <memory>
+#include <vector>
 
 #include "common/core/log.hpp"
 #include "cosim/participant.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "mpm_solver/serve/checkpoint.hpp"
 #include "mpm_solver/serve/exchange.hpp"
+#include "mpm_solver/serve/field_export.hpp"
+#include "mpm_solver/serve/field_import.hpp"
 #include "mpm_solver/serve/served_zone.hpp"
 #include "mpm_solver/serve/write_output.hpp"
 
@@ -23,8 +26,8 @@ cosim::v1::Hello hello() {
   hello.set_software("mpfd mpm_solver");
   hello.set_min_major(cosim::protocol_major);
   hello.set_max_major(cosim::protocol_major);
-  for (const char* capability :
-       {"node_regions", "particles", "gauges", "write_output", "checkpoint", "boundary_outflow"})
+  for (const char* capability : {"node_regions", "particles", "gauges", "write_output",
+                                 "checkpoint", "boundary_outflow", "field_chunks"})
     hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
@@ -41,24 +44,24 @@ void require_awake(const ServedZone& zone, std::string_view body) {
             "' to a dormant MPM zone; send Activate first (proto/README.md §5)");
 }
 
-/// The reply to any request but Shutdown (and Ping, which Participant answers).
-cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& request) {
+/// The replies to any request but Shutdown (and Ping, which Participant
+/// answers): one, or the FieldChunks of a FieldExportRequest.
+std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
+                                   const cosim::Message& request) {
   const auto& header = request.header;
   const std::string_view body = cosim::body_name(header);
-  if (header.has_field_export() || header.has_field_chunk() || header.has_field_import_commit())
-    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                               "mpm_solver serve does not support '" + std::string(body) +
-                                   "' (not in its Hello capabilities); the solver carries on",
-                               false);
   if (!header.has_setup() && !header.has_exchange() && !header.has_write_output() &&
-      !header.has_checkpoint() && !header.has_restore() && !header.has_activate())
+      !header.has_checkpoint() && !header.has_restore() && !header.has_activate() &&
+      !header.has_field_export() && !header.has_field_chunk() && !header.has_field_import_commit())
     throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
                                "'" + std::string(body) + "' is not a request to a solver");
   if (header.has_setup() == (zone != nullptr))
     throw cosim::ProtocolError(
         cosim::v1::ERROR_CODE_UNEXPECTED,
         zone ? "a second Setup" : "'" + std::string(body) + "' before Setup");
-  cosim::Message reply;
+  if (header.has_field_export()) return export_fields(*zone, request);
+  std::vector<cosim::Message> replies(1);
+  cosim::Message& reply = replies.front();
   if (header.has_setup()) {
     zone = set_up_zone(header.setup());
     *reply.header.mutable_setup_ack() = setup_ack(header.setup(), *zone);
@@ -71,6 +74,14 @@ cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& r
     if (zone->dormant) zone->start_time = header.envelope().sim_time() - zone->solver.time();
     zone->dormant = false;
     reply.header.mutable_activate_ack()->set_stable_dt(zone->solver.stable_dt());
+  } else if (header.has_field_chunk()) {
+    *reply.header.mutable_field_chunk_ack() = receive_field_chunk(*zone, request);
+  } else if (header.has_field_import_commit()) {
+    *reply.header.mutable_field_import_done() = commit_field_import(*zone, request);
+    Logger("mpm.serve")
+        .info("field import '", header.field_import_commit().transfer_id(),
+              "' committed: ", zone->solver.particles().size(), " particles now, clock ",
+              zone->time(), " s");
   } else if (header.has_exchange()) {
     reply = run_exchange(*zone, request);
   } else if (header.has_write_output()) {
@@ -82,7 +93,7 @@ cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& r
   } else {
     *reply.header.mutable_restored() = restore_checkpoint(*zone, header.restore());
   }
-  return reply;
+  return replies;
 }
 
 /// Answers `request` with Error. A fatal one is sent best effort (the coupler
@@ -134,7 +145,7 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
       return;
     }
     try {
-      participant.reply(request, answer(zone, request));
+      for (auto& reply : answer(zone, request)) participant.reply(request, std::move(reply));
     } catch (const cosim::ProtocolError& error) {
       report_error(participant, request, error.code(), error.what(), error.fatal());
     } catch (const std::exception& error) {

@@ -16,9 +16,11 @@ struct ServeOptions {
 };
 
 /// Sends Hello, then answers Setup, Activate, Exchange, WriteOutput,
-/// Checkpoint, Restore (and Ping) until Shutdown, which it acknowledges and
-/// returns from. Field handoffs get a non-fatal Error{UNEXPECTED}; a failed
-/// Checkpoint or Restore a non-fatal Error{IO}, the state unchanged. Throws
+/// Checkpoint, Restore, the whole-field transfers of v1.2 (FieldExportRequest,
+/// FieldChunk, FieldImportCommit) and Ping until Shutdown, which it
+/// acknowledges and returns from. A refused field transfer gets a non-fatal
+/// Error; a failed Checkpoint or Restore a non-fatal Error{IO}, the state
+/// unchanged. Throws
 /// mpfd::Error — after answering the request with a fatal Error{code,
 /// message} — when the coupler refuses the version, stays silent for
 /// idle_timeout, or sends a request that cannot be carried out, and when

@@ -12,6 +12,7 @@
 #include "common/config/scene.hpp"
 #include "common/io/snapshot_writer.hpp"
 #include "cosim/message.hpp"
+#include "cosim/serving/field_stream.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/serve/zone_region.hpp"
 #include "mpm_solver/snapshot_particles.hpp"
@@ -31,6 +32,7 @@ struct ServedZone {
   std::optional<io::SnapshotWriter> snapshots;  // made at the first WriteOutput
   SnapshotParticles snapshot_fields;
   NodeBoxMap node_box_map;  ///< scratch of the NODES exports, kept so they do not allocate
+  std::optional<cosim::FieldAssembly> field_import;  ///< the FieldChunks of an import (v1.2)
 
   /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
   [[nodiscard]] double time() const { return start_time + solver.time(); }

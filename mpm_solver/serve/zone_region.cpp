@@ -65,6 +65,14 @@ std::size_t ZoneRegion::cell_count(const grid::UniformGrid& grid) const {
   return n;
 }
 
+RegionExtent::RegionExtent(const ZoneRegion& region, const grid::UniformGrid& grid) {
+  for (int a = 0; a < 3; ++a) {
+    active_[a] = grid.is_active(a);
+    lower_[a] = grid.origin()[a] + region.lo[a] * grid.spacing()[a];
+    upper_[a] = grid.origin()[a] + region.hi[a] * grid.spacing()[a];
+  }
+}
+
 ZoneRegion make_zone_region(const cosim::v1::Region& region, const grid::UniformGrid& grid) {
   if (region.name().empty()) reject(region, grid, "a region needs a name");
   const bool nodes = region.kind() == cosim::v1::REGION_KIND_NODES;

@@ -30,6 +30,26 @@ struct ZoneRegion {
   [[nodiscard]] std::size_t cell_count(const grid::UniformGrid& grid) const;
 };
 
+/// A PARTICLES region's box of cells in metres, [lower, upper) on the grid's
+/// active axes (an inactive axis does not constrain).
+class RegionExtent {
+ public:
+  RegionExtent(const ZoneRegion& region, const grid::UniformGrid& grid);
+  /// Whether the point (x[0], x[1], x[2]) lies in the box.
+  [[nodiscard]] bool contains(const double* x) const {
+    for (std::size_t a = 0; a < 3; ++a)
+      if (active_[a] && !(x[a] >= lower_[a] && x[a] < upper_[a])) return false;
+    return true;
+  }
+  [[nodiscard]] double lower(std::size_t axis) const { return lower_[axis]; }
+  [[nodiscard]] double upper(std::size_t axis) const { return upper_[axis]; }
+  [[nodiscard]] bool active(std::size_t axis) const { return active_[axis]; }
+
+ private:
+  bool active_[3] = {};
+  double lower_[3] = {}, upper_[3] = {};
+};
+
 /// The quantities each kind serves: export-only, apply-only and both.
 /// NODES: mass, momentum (export, apply), internal_force (apply),
 /// internal_energy (export, per cell of cell_count). PARTICLES: id,

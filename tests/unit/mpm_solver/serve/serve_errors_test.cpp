@@ -135,12 +135,15 @@ TEST(MpmServeErrors, AnAdvanceFromAnotherTimeIsRefused) {
   EXPECT_THAT(served.stop_reason(), HasSubstr("UNEXPECTED"));
 }
 
-TEST(MpmServeErrors, AFieldHandoffIsRefusedWithoutStopping) {
+TEST(MpmServeErrors, AFieldExportOfAnUnknownRegionIsRefusedWithoutStopping) {
   ServedMpm served;
   served.request(setup(blast_text(), {}));
   cosim::Message handoff;
   handoff.header.mutable_field_export()->set_transfer_id("t");
-  EXPECT_THAT(served.refusal(std::move(handoff)), HasSubstr("does not support"));
+  handoff.header.mutable_field_export()->add_fields("nowhere/mass");
+  EXPECT_THAT(served.refusal(std::move(handoff)),
+              AllOf(HasSubstr("UNKNOWN_REGION"), HasSubstr("'nowhere/mass'"),
+                    HasSubstr("region 'nowhere' was not declared")));
   cosim::Message exchange;
   add_propose(exchange);
   EXPECT_GT(served.request(std::move(exchange))
