@@ -1,8 +1,9 @@
-// coupler: runs a CFDMP scene (T §4.3) by driving `fdm_solver serve` and
-// `mpm_solver serve` over protocol v1 (proto/README.md).
+// coupler: runs a CFDMP (T §4.3) or AFDMP (T chapter 3) scene by driving
+// `fdm_solver serve` and `mpm_solver serve` over protocol v1 (proto/README.md).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -12,14 +13,14 @@
 #include "coupler/run/replay.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"coupler: CFDMP co-simulation of the FDM and MPM solvers"};
+  CLI::App app{"coupler: CFDMP and AFDMP co-simulation of the FDM and MPM solvers"};
   app.require_subcommand(1);
   std::string scene_file, out_dir, record, endpoints;
   bool processes = false;
   mpfd::coupler::LaunchOptions launch;
   std::string fdm_program, mpm_program;
-  auto* run = app.add_subcommand("run", "run a cfdmp scene to its end time");
-  run->add_option("scene", scene_file, "scene file (YAML), solver.method cfdmp")
+  auto* run = app.add_subcommand("run", "run a cfdmp or afdmp scene to its end time");
+  run->add_option("scene", scene_file, "scene file (YAML), solver.method cfdmp or afdmp")
       ->required()
       ->check(CLI::ExistingFile);
   run->add_option("--out", out_dir, "output folder (summary.json, fdm/, mpm/)")->required();
@@ -30,6 +31,15 @@ int main(int argc, char** argv) {
                   "fdm=URL,mpm=URL: bind these (with --processes the children connect to them; "
                   "without, solvers started elsewhere do)");
   run->add_option("--timeout", launch.timeout_seconds, "seconds to wait for each reply")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  double chunk_mib = 64, handoff_timeout = 300;
+  run->add_option("--chunk-mib", chunk_mib,
+                  "afdmp: largest piece of a whole-field handoff message, MiB (proto §15)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  run->add_option("--handoff-timeout", handoff_timeout,
+                  "afdmp: seconds to wait for each piece and commit of a handoff")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   run->add_option("--fdm-program", fdm_program, "fdm_solver to start (default: beside coupler)");
@@ -83,6 +93,8 @@ int main(int argc, char** argv) {
     mpfd::coupler::CoupledRunOptions options;
     options.out_dir = out_dir;
     if (!record.empty()) options.record = record;
+    options.max_chunk_bytes = static_cast<std::uint64_t>(chunk_mib * 1024 * 1024);
+    options.handoff_timeout = std::chrono::milliseconds(std::llround(handoff_timeout * 1e3));
     mpfd::coupler::launch_run(scene_file, launch, options, argv[0]);
     return 0;
   } catch (const std::exception& error) {

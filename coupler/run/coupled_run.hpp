@@ -10,6 +10,7 @@
 // what was written, writes summary.json with status "failed" and throws.
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -29,6 +30,10 @@ struct CoupledRunOptions {
   bool progress = true;                         ///< progress line on a terminal
   /// Wall time between Pings to a sleeping MPM zone's solver (well inside its idle timeout).
   std::chrono::milliseconds keep_alive{1000};
+  /// AFDMP handoffs: the largest FieldChunk frame (proto §15) and how long one
+  /// chunk or commit may take (a whole-field commit can outlast a step's reply timeout).
+  std::uint64_t max_chunk_bytes = std::uint64_t{64} << 20;
+  std::chrono::milliseconds handoff_timeout{300000};
 };
 
 /// What the run measured (also in summary.json).

@@ -10,6 +10,8 @@
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
 #include "common/io/output_directory.hpp"
+#include "coupler/run/afdmp_layout.hpp"
+#include "coupler/run/afdmp_run.hpp"
 #include "coupler/run/gauges.hpp"
 #include "coupler/run/zone_layout.hpp"
 #include "fdm_solver/serve/serve.hpp"
@@ -74,7 +76,12 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
                             CoupledRunOptions options, const std::filesystem::path& self) {
   const std::string text = read_text(scene_file);
   const config::Scene scene = config::parse_scene(text, scene_file.string());
-  (void)make_zone_layout(scene);  // refuse a scene the coupler cannot drive before anything starts
+  // Refuse a scene the coupler cannot drive before anything starts.
+  const bool afdmp = scene.solver.method == config::Method::afdmp;
+  if (afdmp)
+    (void)make_afdmp_layout(scene);
+  else
+    (void)make_zone_layout(scene);
   for (const auto& gauge : scene.gauges) (void)gauge_owner(scene, gauge);
   if (launch.mode == LaunchMode::external &&
       (!launch.endpoints.contains("fdm") || !launch.endpoints.contains("mpm")))
@@ -123,7 +130,8 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
     solvers.push_back(external_solver("fdm"));
     solvers.push_back(external_solver("mpm"));
   }
-  return run_cfdmp(scene, text, hub, solvers, options);
+  return afdmp ? run_afdmp(scene, text, hub, solvers, options)
+               : run_cfdmp(scene, text, hub, solvers, options);
 }
 
 }  // namespace mpfd::coupler

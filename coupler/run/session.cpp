@@ -39,9 +39,9 @@ double advance_seconds(const cosim::Message& reply) {
 }
 
 std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
-                      const std::string& reason) {
+                      const std::string& reason, const std::set<std::string>& already_shut) {
   for (const auto& solver : solvers) {
-    if (solver->ended()) continue;
+    if (already_shut.contains(solver->name()) || solver->ended()) continue;
     try {
       cosim::Message message;
       message.header.mutable_shutdown()->set_reason(reason);

@@ -4,6 +4,7 @@
 // times from replies, and the best-effort Shutdown at the end.
 
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,9 +29,9 @@ namespace v1 = cosim::v1;
 /// AdvanceResult.wall_seconds of an ExchangeResult, 0 if it holds no Advance.
 [[nodiscard]] double advance_seconds(const cosim::Message& reply);
 
-/// Best effort: Shutdown to every solver still there, then end the ones we
-/// started. Returns how each ended ("; solver 'fdm' exited with code 0 ...").
+/// Best effort: Shutdown to every solver still there (not in `already_shut`),
+/// then end the ones we started. Returns how each ended ("; solver 'fdm' ...").
 std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
-                      const std::string& reason);
+                      const std::string& reason, const std::set<std::string>& already_shut = {});
 
 }  // namespace mpfd::coupler

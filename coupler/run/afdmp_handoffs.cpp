@@ -1,0 +1,293 @@
+#include "coupler/run/afdmp_handoffs.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "common/core/error.hpp"
+#include "common/core/log.hpp"
+#include "cosim/arrays.hpp"
+#include "coupler/handoff/detonation_trigger.hpp"
+#include "coupler/handoff/mpm_to_fdm.hpp"
+#include "coupler/handoff/placeholder.hpp"
+#include "coupler/handoff/sub_grid.hpp"
+#include "coupler/remap/radial_tracers.hpp"
+#include "coupler/remap/spherical_to_cartesian.hpp"
+#include "coupler/run/afdmp_fields.hpp"
+#include "coupler/run/field_transfer.hpp"
+
+namespace mpfd::coupler {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace region = afdmp_region;
+
+grid::UniformGrid whole_grid(const config::Scene& scene) {
+  return grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper, scene.domain.cells);
+}
+
+std::vector<int> explosive_materials(const config::Scene& scene) {
+  std::vector<int> out;
+  for (const auto& charge : scene.charges)
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == charge.material) out.push_back(static_cast<int>(m));
+  return out;
+}
+
+/// The worst of the comparisons, by their worst component.
+ConservedError worst_of(std::initializer_list<ConservedError> errors) {
+  ConservedError worst;
+  for (const auto& e : errors)
+    if (e.worst() > worst.worst()) worst = e;
+  return worst;
+}
+
+nlohmann::json transfer_json(const FieldTransferStats& stats) {
+  return {{"chunks", stats.chunks}, {"bytes", stats.bytes}};
+}
+
+handoff::ConservedView remapped_view(const remap::CartesianFields& f) {
+  return {f.density, {f.momentum[0], f.momentum[1], f.momentum[2]}, f.total_energy};
+}
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// Cells and tracers of the whole grid into the FDM (fields all_cells, all_tracers).
+cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
+                                           const handoff::ConservedCells& cells,
+                                           const handoff::TracerPoints& tracers,
+                                           std::string_view transfer, cosim::Hub& hub,
+                                           const HandoffSettings& settings,
+                                           FieldTransferStats& stats) {
+  cosim::Message fields;
+  add_cells_to_wire(grid, cells.view(), region::kAllCells, fields);
+  add_tracers_to_wire(tracers.view(), region::kAllTracers, fields);
+  auto names = field_names(region::kAllCells, {"rho", "momentum", "E"});
+  for (auto& name : field_names(region::kAllTracers, {"position", "material"}))
+    names.push_back(std::move(name));
+  return import_fields(hub, "fdm", transfer, fields, names, settings.max_chunk_bytes, true,
+                       settings.timeout, &stats);
+}
+
+}  // namespace
+
+Conserved placeholder_conserved(const config::Scene& scene, const AfdmpLayout& layout) {
+  if (!layout.fsi_cells) return {};
+  const grid::UniformGrid grid = whole_grid(scene);
+  handoff::ConservedCells cells;
+  cells.assign(grid.cell_count());
+  handoff::fill_ambient_cells(grid, to_cell_box(*layout.fsi_cells), handoff::ambient_state(scene),
+                              cells);
+  return cell_conserved(cells.view(), grid.cell_volume());
+}
+
+HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& layout,
+                                 cosim::Hub& hub, const HandoffSettings& settings) {
+  const auto start = Clock::now();
+  FieldTransferStats exported, imported;
+  const auto names =
+      field_names(region::kFluidParticles,
+                  {"position", "velocity", "mass", "internal_energy", "material", "burn_fraction"});
+  const cosim::Message fields = export_fields(
+      hub, "mpm", "mpm_to_fdm", names, settings.max_chunk_bytes, settings.timeout, &exported);
+  const handoff::ParticleSet particles = particles_from_wire(fields, region::kFluidParticles);
+  const auto burn = cosim::view_array<double>(fields, region::kFluidParticles, "burn_fraction");
+  const auto explosive = explosive_materials(scene);
+  if (!handoff::detonation_complete(burn.values(), particles.material, explosive))
+    throw Error(
+        "AFDMP: the MPM -> FDM handoff found explosive particles with F < 1 in "
+        "fluid_particles; phase 1 ends only when every one has burnt (T §3.2.1)");
+
+  const grid::UniformGrid grid = whole_grid(scene);
+  const handoff::CellBox fluid_box = to_cell_box(layout.fluid_cells);
+  const grid::UniformGrid fluid_grid = handoff::sub_grid(grid, fluid_box);
+  handoff::FdmStart fdm = handoff::mpm_to_fdm(fluid_grid, particles.view());
+  handoff::ConservedCells cells;
+  cells.assign(grid.cell_count());
+  handoff::embed_cells(grid, fluid_box, fdm.cells.view(), cells);
+  Conserved placeholder;
+  if (layout.fsi_cells) {
+    const handoff::CellBox fsi_box = to_cell_box(*layout.fsi_cells);
+    const auto ambient = handoff::ambient_state(scene);
+    handoff::fill_ambient_cells(grid, fsi_box, ambient, cells);
+    handoff::append_regular_tracers(grid, fsi_box, ambient.material,
+                                    scene.solver.fdm.tracers_per_axis, fdm.tracers);
+    placeholder = placeholder_conserved(scene, layout);
+  }
+  const auto done =
+      import_into_fdm(grid, cells, fdm.tracers, "mpm_to_fdm", hub, settings, imported);
+
+  const Conserved received = particle_conserved(particles.view());
+  const Conserved sent = cell_conserved(fdm.cells.view(), fluid_grid.cell_volume());
+  const Conserved held =
+      from_totals(std::span<const double>(done.totals().data(), done.totals().size()));
+  const ConservedError kernel = relative_error(received, sent);
+  const ConservedError solver = relative_error(sum(sent, placeholder), held);
+  HandoffRecord record;
+  record.worst_error = worst_of({kernel, solver});
+  record.stable_dt = done.stable_dt();
+  record.summary = {
+      {"name", "mpm_to_fdm"},
+      {"particles", particles.size()},
+      {"tracers", fdm.tracers.size()},
+      {"cells", grid.cell_count()},
+      {"received", received.summary()},
+      {"sent", sent.summary()},
+      {"placeholder", placeholder.summary()},
+      {"solver_totals", held.summary()},
+      {"relative_error",
+       {{"sent_vs_received", kernel.summary()}, {"solver_vs_sent", solver.summary()}}},
+      {"kinetic_to_internal_J", fdm.kinetic_to_internal},
+      {"export", transfer_json(exported)},
+      {"import", transfer_json(imported)},
+      {"wall_s", seconds_since(start)}};
+  return record;
+}
+
+HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const SphericalStage& stage,
+                                       cosim::Hub& hub, const HandoffSettings& settings) {
+  const auto start = Clock::now();
+  FieldTransferStats imported;
+  const grid::UniformGrid grid = whole_grid(scene);
+  const remap::RadialShells shells = stage.shells();
+  const remap::RadialProfile profile = shells.view();
+  const remap::CartesianFields remapped =
+      remap::remap_radial_profile(grid, stage.centre(), profile);
+  // What the profile does not cover keeps the scene's initial state (the ambient air).
+  const auto ambient = handoff::ambient_state(scene);
+  const double ambient_e = ambient.density * (ambient.specific_internal_energy +
+                                              0.5 * (ambient.velocity[0] * ambient.velocity[0] +
+                                                     ambient.velocity[1] * ambient.velocity[1] +
+                                                     ambient.velocity[2] * ambient.velocity[2]));
+  handoff::ConservedCells cells;
+  cells.assign(grid.cell_count());
+  handoff::ConservedCells fill;
+  fill.assign(grid.cell_count());
+  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
+    const double rest = std::max(0.0, 1.0 - remapped.covered_fraction[c]);
+    fill.density[c] = rest * ambient.density;
+    fill.total_energy[c] = rest * ambient_e;
+    for (int a = 0; a < 3; ++a) fill.momentum[a][c] = rest * ambient.density * ambient.velocity[a];
+    cells.density[c] = remapped.density[c] + fill.density[c];
+    cells.total_energy[c] = remapped.total_energy[c] + fill.total_energy[c];
+    for (int a = 0; a < 3; ++a)
+      cells.momentum[a][c] = remapped.momentum[a][c] + fill.momentum[a][c];
+  }
+  const handoff::TracerPoints tracers = remap::radial_tracers(
+      grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
+  const auto done =
+      import_into_fdm(grid, cells, tracers, "spherical_to_fdm", hub, settings, imported);
+
+  // The remap conserves mass, energy and the radial impulse of the part of the
+  // profile inside the grid (its vector momentum cancels by symmetry).
+  const auto inside = remap::totals_inside_grid(grid, stage.centre(), profile);
+  Conserved received;
+  received.mass = inside.mass;
+  received.energy = inside.energy;
+  received.momentum[0] = inside.radial_impulse;
+  received.momentum_scale = std::abs(inside.radial_impulse);
+  const double volume = grid.cell_volume();
+  Conserved sent = cell_conserved(remapped_view(remapped), volume);
+  sent.momentum = {0, 0, 0};
+  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
+    const auto x = grid.cell_center(grid.cell_of_index(c));
+    const double d[3] = {x[0] - stage.centre()[0], x[1] - stage.centre()[1],
+                         x[2] - stage.centre()[2]};
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (r > 0)
+      for (int a = 0; a < 3; ++a) sent.momentum[0] += remapped.momentum[a][c] * d[a] / r * volume;
+  }
+  sent.momentum_scale = std::abs(sent.momentum[0]);
+  const Conserved ambient_fill = cell_conserved(fill.view(), volume);
+  const Conserved held =
+      from_totals(std::span<const double>(done.totals().data(), done.totals().size()));
+  const Conserved sent_with_fill =
+      sum(cell_conserved(remapped_view(remapped), volume), ambient_fill);
+  const ConservedError solver = relative_error(sent_with_fill, held);
+  const ConservedError kernel = relative_error(received, sent);
+  const auto stage_totals = stage.totals();
+  HandoffRecord record;
+  record.worst_error = worst_of({kernel, solver});
+  record.stable_dt = done.stable_dt();
+  record.summary = {
+      {"name", "spherical_to_fdm"},
+      {"stage_particles", shells.density.size()},
+      {"tracers", tracers.size()},
+      {"cells", grid.cell_count()},
+      {"received_inside_grid", received.summary()},
+      {"sent", sent.summary()},
+      {"ambient_fill", ambient_fill.summary()},
+      {"solver_totals", held.summary()},
+      {"relative_error",
+       {{"sent_vs_received", kernel.summary()}, {"solver_vs_sent", solver.summary()}}},
+      {"stage_totals",
+       {{"mass", stage_totals.mass},
+        {"kinetic_energy", stage_totals.kinetic_energy},
+        {"internal_energy", stage_totals.internal_energy}}},
+      {"import", transfer_json(imported)},
+      {"wall_s", seconds_since(start)}};
+  return record;
+}
+
+HandoffRecord handoff_fdm_to_mpm(const config::Scene& scene, const AfdmpLayout& layout,
+                                 cosim::Hub& hub, const HandoffSettings& settings,
+                                 const Conserved& placeholder) {
+  const auto start = Clock::now();
+  FieldTransferStats exported, imported;
+  auto names =
+      field_names(region::kFluidCells, {"rho", "momentum", "E", "pressure", "cell_material",
+                                        "volume_fraction", "material_density", "material_energy"});
+  for (auto& name : field_names(region::kFluidTracers, {"position", "material"}))
+    names.push_back(std::move(name));
+  for (auto& name : field_names(region::kFsiCells, {"rho", "momentum", "E"}))
+    names.push_back(std::move(name));
+  const cosim::Message fields = export_fields(
+      hub, "fdm", "fdm_to_mpm", names, settings.max_chunk_bytes, settings.timeout, &exported);
+
+  const grid::UniformGrid grid = whole_grid(scene);
+  const grid::UniformGrid fluid_grid = handoff::sub_grid(grid, to_cell_box(layout.fluid_cells));
+  const FdmEndFields end(fluid_grid, fields, region::kFluidCells, region::kFluidTracers);
+  const handoff::ParticleSet particles = handoff::fdm_to_mpm(fluid_grid, end.view());
+  cosim::Message batch;
+  add_particles_to_wire(particles, kHandoffFirstId, region::kFluidParticles, batch);
+  const auto particle_names = field_names(
+      region::kFluidParticles,
+      {"id", "position", "velocity", "mass", "volume", "internal_energy", "material", "stress"});
+  const auto done = import_fields(hub, "mpm", "fdm_to_mpm", batch, particle_names,
+                                  settings.max_chunk_bytes, false, settings.timeout, &imported);
+
+  const double volume = grid.cell_volume();
+  const Conserved received = cell_conserved(end.cells().view(), volume);
+  const Conserved sent = particle_conserved(particles.view());
+  const Conserved held =
+      from_totals(std::span<const double>(done.totals().data(), done.totals().size()));
+  const auto rho = cosim::view_array<double>(fields, region::kFsiCells, "rho");
+  const auto momentum = cosim::view_array<double>(fields, region::kFsiCells, "momentum");
+  const auto energy = cosim::view_array<double>(fields, region::kFsiCells, "E");
+  const Conserved fsi_now =
+      wire_cell_conserved(rho.values(), momentum.values(), energy.values(), volume);
+  const Conserved leak = difference(fsi_now, placeholder);
+  const ConservedError kernel = relative_error(received, sent);
+  const ConservedError solver = relative_error(sent, held);
+  HandoffRecord record;
+  record.worst_error = worst_of({kernel, solver});
+  record.stable_dt = done.stable_dt();
+  record.summary = {
+      {"name", "fdm_to_mpm"},
+      {"cells", fluid_grid.cell_count()},
+      {"particles", particles.size()},
+      {"received", received.summary()},
+      {"sent", sent.summary()},
+      {"solver_totals", held.summary()},
+      {"relative_error",
+       {{"sent_vs_received", kernel.summary()}, {"solver_vs_sent", solver.summary()}}},
+      {"fsi_face_leak", leak.summary()},
+      {"export", transfer_json(exported)},
+      {"import", transfer_json(imported)},
+      {"wall_s", seconds_since(start)}};
+  return record;
+}
+
+}  // namespace mpfd::coupler

@@ -1,0 +1,500 @@
+#include "coupler/run/afdmp_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "common/core/error.hpp"
+#include "common/core/log.hpp"
+#include "common/core/progress.hpp"
+#include "common/io/run_summary.hpp"
+#include "cosim/arrays.hpp"
+#include "cosim/recorder.hpp"
+#include "coupler/handoff/detonation_trigger.hpp"
+#include "coupler/run/afdmp_handoffs.hpp"
+#include "coupler/run/afdmp_layout.hpp"
+#include "coupler/run/afdmp_phase.hpp"
+#include "coupler/run/gauges.hpp"
+#include "coupler/run/session.hpp"
+#include "coupler/run/spherical_stage.hpp"
+#include "coupler/run/wire.hpp"
+
+namespace mpfd::coupler {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace region = afdmp_region;
+const std::vector<std::string> kPeers = {"fdm", "mpm"};
+/// Relative error above which a handoff is reported as not conserving (sums of
+/// up to 1e7 values; the kernels reach 1e-14...1e-13).
+constexpr double kHandoffTolerance = 1e-12;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+AfdmpStart start_of(const config::Scene& scene) {
+  return scene.solver.afdmp.start == config::AfdmpStart::spherical ? AfdmpStart::spherical
+                                                                   : AfdmpStart::mpm;
+}
+
+std::vector<int> explosive_materials(const config::Scene& scene) {
+  std::vector<int> out;
+  for (const auto& charge : scene.charges)
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == charge.material) out.push_back(static_cast<int>(m));
+  return out;
+}
+
+std::vector<cosim::Message> setups(const config::Scene& scene, const std::string& text,
+                                   const AfdmpRegions& regions, const std::filesystem::path& out) {
+  std::vector<cosim::Message> messages(2);
+  const char* names[2] = {"fdm", "mpm"};
+  const v1::ZoneKind kinds[2] = {v1::ZONE_KIND_EULER, v1::ZONE_KIND_MPM};
+  const std::vector<v1::Region>* lists[2] = {&regions.fdm, &regions.mpm};
+  for (int s = 0; s < 2; ++s) {
+    auto& setup = *messages[s].header.mutable_setup();
+    setup.mutable_zone()->set_name(names[s]);
+    setup.mutable_zone()->set_kind(kinds[s]);
+    *setup.mutable_zone()->mutable_grid() = wire_grid(scene);
+    setup.set_scene_fragment(text);
+    for (const auto& r : *lists[s]) *setup.add_regions() = r;
+    setup.set_output_dir((out / names[s]).string());
+  }
+  return messages;
+}
+
+/// Refuses solvers that lack what the scene needs, naming the capability.
+void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed) {
+  const auto need = [&](std::size_t s, const char* capability) {
+    if (!offers(hellos[s], capability))
+      throw Error("solver '" + kPeers[s] + "' lacks capability '" + capability +
+                  "' that solver.method afdmp needs (proto/README.md §15)");
+  };
+  need(0, "field_chunks");
+  need(0, "tracer_regions");
+  if (mpm_needed) {
+    need(1, "field_chunks");
+    need(1, "particles");
+  }
+}
+
+double proposed_dt(const cosim::Message& reply, const std::string& peer) {
+  for (const auto& result : reply.header.exchange_result().results())
+    if (result.has_proposed()) return result.proposed().stable_dt();
+  throw Error("solver '" + peer + "' answered without a ProposeDt result");
+}
+
+class AfdmpLoop {
+ public:
+  AfdmpLoop(const config::Scene& scene, const AfdmpLayout& layout, cosim::Hub& hub,
+            io::RunSummary& summary, const CoupledRunOptions& options)
+      : scene_(scene),
+        layout_(layout),
+        start_(start_of(scene)),
+        machine_({.start = start_,
+                  .end_time = scene.time.end,
+                  .fsi_zone = layout.fsi_cells.has_value(),
+                  .activation_pressure = layout.activation_pressure,
+                  .handoff_radius = scene.solver.afdmp.spherical.handoff_radius.value_or(0.0)}),
+        explosive_(explosive_materials(scene)),
+        gauges_(scene, options.out_dir),
+        hub_(hub),
+        summary_(summary),
+        options_(options),
+        settings_{.max_chunk_bytes = options.max_chunk_bytes, .timeout = options.handoff_timeout} {
+    for (const auto& peer : kPeers) contact_[peer] = Clock::now();
+  }
+
+  CoupledRunReport run() {
+    const auto start = Clock::now();
+    phase_start_ = start;
+    if (start_ == AfdmpStart::spherical) {
+      stage_.emplace(scene_);
+      holder_ = "spherical";
+      if (layout_.fsi_cells)
+        discard_mpm_fluid();
+      else
+        retire("mpm", "the 1D start and the FDM carry this scene; no FSI zone");
+      observe_stage();
+      sample_stage_gauges(0);
+    } else {
+      step_mpm_detonation(false, 0, 0);
+    }
+    handle(machine_.next(observation_), 0, 0);
+    write_output(0);
+    ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
+    const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
+    int outputs = 1;
+    double t = 0;
+    std::int64_t n = 0;
+    while (machine_.phase() != AfdmpPhase::done) {
+      if (n >= scene_.time.max_steps)
+        throw Error("scene '" + scene_.name +
+                    "': time.max_steps = " + std::to_string(scene_.time.max_steps) +
+                    " reached at t = " + std::to_string(t) + " s");
+      const double next_output = std::min(scene_.time.end, outputs * interval);
+      double dt = dt_;
+      bool output_now = false;
+      if (t + dt >= next_output * (1 - 1e-12)) {
+        dt = next_output - t;
+        output_now = true;
+      }
+      ++n;
+      hub_.set_clock(static_cast<std::uint64_t>(n), t);
+      const double t_next = output_now ? next_output : t + dt;
+      step(t, t_next, n);
+      t = t_next;
+      ++phase_steps_;
+      report_.steps = n;
+      report_.time = t;
+      hub_.set_clock(static_cast<std::uint64_t>(n), t);
+      handle(machine_.next(observation_), t, n);
+      if (output_now) {
+        write_output(outputs++);
+        record_summary("running", seconds_since(start));
+      }
+      keep_idle_alive();
+      progress.update(n, t);
+    }
+    progress.finish(n, t);
+    report_.wall_seconds = seconds_since(start);
+    record_summary("completed", report_.wall_seconds);
+    return report_;
+  }
+
+  void record_summary(const std::string& status, double wall) {
+    gauges_.flush();
+    summary_.set_detail("gauges", gauges_.listing());
+    summary_.set_status(status);
+    summary_.set_progress(report_.steps, report_.time, scene_.time.end, wall);
+    nlohmann::json phases = phases_;
+    phases.push_back({{"phase", phase_name(machine_.phase())},
+                      {"start", phase_time_},
+                      {"steps", phase_steps_},
+                      {"wall_s", seconds_since(phase_start_)}});
+    summary_.set_detail("afdmp", {{"start", start_ == AfdmpStart::mpm ? "mpm" : "spherical"},
+                                  {"phases", phases},
+                                  {"transitions", transitions_},
+                                  {"handoffs", handoffs_},
+                                  {"outputs", outputs_},
+                                  {"handoff_tolerance", kHandoffTolerance}});
+    summary_.write(options_.out_dir / "summary.json");
+  }
+
+  /// The peers that have not been shut down (for the final shutdown).
+  [[nodiscard]] const std::set<std::string>& retired() const { return retired_; }
+
+ private:
+  /// One step of the current phase from t to t_next.
+  void step(double t, double t_next, std::int64_t n) {
+    observation_ = Observation{};
+    observation_.time = t_next;
+    observation_.step = n;
+    switch (machine_.phase()) {
+      case AfdmpPhase::mpm_detonation:
+        step_mpm_detonation(true, t_next - t, t);
+        break;
+      case AfdmpPhase::spherical_detonation:
+        stage_->advance(t_next - t);
+        observe_stage();
+        sample_stage_gauges(t_next);
+        break;
+      case AfdmpPhase::fdm_blast:
+        step_solver("fdm", t_next - t, t, GaugeSamplers::fdm_only);
+        break;
+      case AfdmpPhase::mpm_fsi:
+        step_solver("mpm", t_next - t, t, GaugeSamplers::mpm_only);
+        break;
+      case AfdmpPhase::done:
+        break;
+    }
+  }
+
+  /// Phase 1 by the MPM: advance (unless step 0), the charge's burn state, dt.
+  void step_mpm_detonation(bool advance, double dt, double t) {
+    clear_for_reuse(mpm_request_);
+    clear_for_reuse(fdm_request_);
+    if (advance) add_advance(mpm_request_, dt, t);
+    const int burn_op = exchange_of(mpm_request_).operations_size();
+    add_export(mpm_request_, region::kChargeParticles, {"burn_fraction", "material"});
+    gauges_.add(advance, advance ? t + dt : t, GaugeSamplers::mpm_only, fdm_request_, mpm_request_);
+    add_propose_dt(mpm_request_);
+    const cosim::Message reply = send_and_receive("mpm", mpm_request_);
+    (void)result_of(reply, "mpm", burn_op);
+    observation_.charge_burn = burn_observation(reply, region::kChargeParticles);
+    if (machine_.needs_fluid_burn_check(*observation_.charge_burn)) {
+      cosim::Message check;
+      add_export(check, region::kFluidParticles, {"burn_fraction", "material"});
+      const cosim::Message fluid = send_and_receive("mpm", check);
+      observation_.fluid_burn = burn_observation(fluid, region::kFluidParticles);
+    }
+    gauges_.read(cosim::Message{}, reply);
+    dt_ = proposed_dt(reply, "mpm");
+  }
+
+  /// Phase 2 (fdm) or 3 (mpm): advance, the FSI-face watch (phase 2), gauges, dt.
+  void step_solver(const std::string& peer, double dt, double t, GaugeSamplers samplers) {
+    cosim::Message& request = peer == "fdm" ? fdm_request_ : mpm_request_;
+    clear_for_reuse(fdm_request_);
+    clear_for_reuse(mpm_request_);
+    add_advance(request, dt, t);
+    const bool watch = peer == "fdm" && layout_.watch_cells.has_value();
+    if (watch) add_export(request, region::kFsiWatch, {"pressure"});
+    gauges_.add(true, t + dt, samplers, fdm_request_, mpm_request_);
+    add_propose_dt(request);
+    const cosim::Message reply = send_and_receive(peer, request);
+    if (watch) {
+      const auto p = cosim::view_array<double>(reply, region::kFsiWatch, "pressure");
+      observation_.watch_pressure.assign(p.values().begin(), p.values().end());
+    }
+    if (peer == "fdm")
+      gauges_.read(reply, cosim::Message{});
+    else
+      gauges_.read(cosim::Message{}, reply);
+    dt_ = proposed_dt(reply, peer);
+  }
+
+  BurnObservation burn_observation(const cosim::Message& reply, const char* region_name) const {
+    const auto burn = cosim::view_array<double>(reply, region_name, "burn_fraction");
+    const auto material = cosim::view_array<std::uint32_t>(reply, region_name, "material");
+    std::vector<int> materials(material.values().begin(), material.values().end());
+    BurnObservation seen;
+    for (const int m : materials)
+      if (std::find(explosive_.begin(), explosive_.end(), m) != explosive_.end())
+        ++seen.explosive_particles;
+    seen.complete = handoff::detonation_complete(burn.values(), materials, explosive_);
+    return seen;
+  }
+
+  cosim::Message send_and_receive(const std::string& peer, cosim::Message& request) {
+    hub_.send_keeping_header(peer, request);
+    cosim::Message reply = hub_.receive_from(peer);
+    contact_[peer] = Clock::now();
+    return reply;
+  }
+
+  /// A transition due now: hand over, retire the solver without a further role.
+  void handle(const std::optional<Transition>& transition, double t, std::int64_t n) {
+    if (!transition) return;
+    transitions_.push_back(transition->summary());
+    phases_.push_back({{"phase", phase_name(transition->from)},
+                       {"start", phase_time_},
+                       {"end", t},
+                       {"steps", phase_steps_},
+                       {"wall_s", seconds_since(phase_start_)}});
+    phase_time_ = t;
+    phase_steps_ = 0;
+    phase_start_ = Clock::now();
+    const Logger logger("coupler");
+    logger.info("AFDMP: ", phase_name(transition->from), " -> ", phase_name(transition->to),
+                " at t = ", t, " s (step ", n, ", ", trigger_name(transition->trigger), ")");
+    std::optional<HandoffRecord> record;
+    if (transition->to == AfdmpPhase::fdm_blast) {
+      if (transition->from == AfdmpPhase::spherical_detonation) {
+        record = handoff_spherical_to_fdm(scene_, *stage_, hub_, settings_);
+      } else {
+        record = handoff_mpm_to_fdm(scene_, layout_, hub_, settings_);
+        if (layout_.fsi_cells)
+          discard_mpm_fluid();
+        else
+          retire("mpm", "the FDM carries the blast; no FSI zone");
+        placeholder_ = placeholder_conserved(scene_, layout_);
+      }
+      holder_ = "fdm";
+      contact_["fdm"] = Clock::now();
+    } else if (transition->to == AfdmpPhase::mpm_fsi) {
+      record = handoff_fdm_to_mpm(scene_, layout_, hub_, settings_, placeholder_);
+      retire("fdm", "the MPM carries the FSI phase");
+      holder_ = "mpm";
+      contact_["mpm"] = Clock::now();
+    }
+    if (!record) return;
+    record->summary["time"] = t;
+    record->summary["step"] = n;
+    record->summary["trigger"] = transition->summary();
+    handoffs_.push_back(record->summary);
+    dt_ = record->stable_dt;
+    const double worst = record->worst_error.worst();
+    logger.info("AFDMP: ", record->summary["name"].get<std::string>(),
+                " handoff: worst relative conservation error ", worst, " in ",
+                record->summary["wall_s"].get<double>(), " s");
+    if (worst > kHandoffTolerance)
+      logger.warn("AFDMP: the ", record->summary["name"].get<std::string>(),
+                  " handoff conserves only to ", worst, " (tolerance ", kHandoffTolerance,
+                  "); see summary.json details.afdmp.handoffs");
+  }
+
+  /// The MPM keeps its FSI-zone particles; what lies outside them is the FDM's now.
+  void discard_mpm_fluid() {
+    cosim::Message request;
+    add_remove(request, "to_fdm", region::kFsiParticles);
+    exchange_of(request).mutable_operations(0)->mutable_remove()->set_discard(true);
+    (void)send_and_receive("mpm", request);
+  }
+
+  void retire(const std::string& peer, const std::string& reason) {
+    cosim::Message message;
+    message.header.mutable_shutdown()->set_reason(reason);
+    hub_.send(peer, std::move(message));
+    (void)hub_.receive_from(peer);
+    retired_.insert(peer);
+  }
+
+  /// Pings every idle solver still needed whose last answer is older than keep_alive.
+  void keep_idle_alive() {
+    for (const auto& peer : kPeers) {
+      if (peer == holder_ || retired_.contains(peer)) continue;
+      if (Clock::now() - contact_[peer] < options_.keep_alive) continue;
+      cosim::Message ping;
+      ping.header.mutable_ping();
+      hub_.send(peer, std::move(ping));
+      const auto pong = hub_.receive_from(peer);
+      if (!pong.header.has_pong())
+        throw Error("solver '" + peer + "' answered Ping with '" +
+                    std::string(cosim::body_name(pong.header)) + "'");
+      contact_[peer] = Clock::now();
+    }
+  }
+
+  void observe_stage() {
+    observation_.spherical_burn_complete = stage_->burn_complete();
+    observation_.front_radius = stage_->front_radius();
+    dt_ = stage_->stable_dt();
+  }
+
+  void sample_stage_gauges(double t) {
+    if (!gauges_.due(t)) return;
+    stage_pressure_.resize(scene_.gauges.size());
+    stage_->gauge_pressures(stage_pressure_);
+    gauges_.record_pressure(t, stage_pressure_);
+  }
+
+  /// Output of the solver that holds the state now (the last phase's, once done).
+  void write_output(int index) {
+    if (holder_ == "spherical")
+      write_stage_profile(index);
+    else
+      write_solver_output(holder_, index);
+  }
+
+  void write_solver_output(const std::string& peer, int index) {
+    cosim::Message message;
+    message.header.mutable_write_output()->set_basename(peer + "_" + std::to_string(index));
+    hub_.send(peer, std::move(message));
+    (void)hub_.receive_from(peer);
+    contact_[peer] = Clock::now();
+    outputs_.push_back({{"index", index}, {"solver", peer}, {"time", report_.time}});
+  }
+
+  /// The 1D stage's particles as CSV (radius, density, velocity, specific energy, material).
+  void write_stage_profile(int index) {
+    std::ostringstream name;
+    name << "profile_" << std::setw(4) << std::setfill('0') << index << ".csv";
+    const auto dir = options_.out_dir / "spherical";
+    std::filesystem::create_directories(dir);
+    std::ofstream out(dir / name.str());
+    out << "# 1D spherical stage at t = " << stage_->time() << " s\n"
+        << "r_inner_m,r_outer_m,density_kg_m3,velocity_m_s,specific_internal_energy_J_kg,"
+           "material\n";
+    out << std::setprecision(10);
+    const auto shells = stage_->shells();
+    for (std::size_t k = 0; k < shells.density.size(); ++k)
+      out << shells.edges[k] << ',' << shells.edges[k + 1] << ',' << shells.density[k] << ','
+          << shells.velocity[k] << ',' << shells.internal_energy[k] << ',' << shells.material[k]
+          << '\n';
+    outputs_.push_back({{"index", index}, {"solver", "spherical"}, {"time", report_.time}});
+  }
+
+  const config::Scene& scene_;
+  const AfdmpLayout& layout_;
+  AfdmpStart start_;
+  PhaseMachine machine_;
+  std::vector<int> explosive_;
+  CoupledGauges gauges_;
+  cosim::Hub& hub_;
+  io::RunSummary& summary_;
+  const CoupledRunOptions& options_;
+  HandoffSettings settings_;
+  std::optional<SphericalStage> stage_;
+  std::string holder_ = "mpm";  ///< who holds the state: "mpm", "spherical" or "fdm"
+  Observation observation_;
+  double dt_ = 0;
+  cosim::Message fdm_request_, mpm_request_;
+  std::map<std::string, Clock::time_point> contact_;
+  std::set<std::string> retired_;
+  Conserved placeholder_;
+  std::vector<double> stage_pressure_;
+  nlohmann::json phases_ = nlohmann::json::array();
+  nlohmann::json transitions_ = nlohmann::json::array();
+  nlohmann::json handoffs_ = nlohmann::json::array();
+  nlohmann::json outputs_ = nlohmann::json::array();
+  double phase_time_ = 0;
+  std::int64_t phase_steps_ = 0;
+  Clock::time_point phase_start_;
+  CoupledRunReport report_;
+};
+
+}  // namespace
+
+CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_text,
+                           cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
+                           const CoupledRunOptions& options) {
+  const Logger logger("coupler");
+  const AfdmpLayout layout = make_afdmp_layout(scene);
+  const AfdmpStart start = start_of(scene);
+  std::unique_ptr<cosim::Recorder> recorder;
+  if (options.record) {
+    recorder = std::make_unique<cosim::Recorder>(*options.record);
+    hub.attach_recorder(recorder.get());
+  }
+  io::RunSummary summary("coupler run", scene.name, options.scene_file);
+  std::filesystem::create_directories(options.out_dir / "fdm");
+  std::filesystem::create_directories(options.out_dir / "mpm");
+  CoupledRunReport report;
+  std::set<std::string> retired;
+  try {
+    const auto hellos = hub.accept(kPeers, make_run_id());
+    for (std::size_t i = 0; i < hellos.size(); ++i)
+      logger.info("solver '", kPeers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
+    check_capabilities(hellos, start == AfdmpStart::mpm || layout.fsi_cells.has_value());
+    auto messages = setups(scene, scene_text, afdmp_setup_regions(layout, start), options.out_dir);
+    hub.send("fdm", std::move(messages[0]));
+    hub.send("mpm", std::move(messages[1]));
+    hub.gather(kPeers);
+    AfdmpLoop loop(scene, layout, hub, summary, options);
+    try {
+      report = loop.run();
+    } catch (...) {
+      retired = loop.retired();
+      loop.record_summary("failed", 0);
+      throw;
+    }
+    retired = loop.retired();
+  } catch (const std::exception& error) {
+    std::string ended;
+    for (const auto& solver : solvers)
+      if (const auto how = solver->ended()) ended += "; solver '" + solver->name() + "' " + *how;
+    const std::string text = std::string(error.what()) + ended;
+    summary.set_status("failed", text);
+    summary.write(options.out_dir / "summary.json");
+    shut_down(hub, solvers, "coupler stops: " + text, retired);
+    hub.attach_recorder(nullptr);
+    if (recorder) recorder->close();
+    throw Error("coupler run failed: " + text);
+  }
+  shut_down(hub, solvers, "run completed", retired);
+  hub.attach_recorder(nullptr);
+  if (recorder) recorder->close();
+  logger.info("done: ", report.steps, " steps to t = ", report.time, " s in ", report.wall_seconds,
+              " s");
+  return report;
+}
+
+}  // namespace mpfd::coupler
