@@ -10,7 +10,8 @@ namespace mpfd::coupler {
 namespace {
 
 constexpr const char* kGroup = "gauges";
-constexpr std::size_t kQuantities = 5;  // density, pressure, velocity_x, velocity_y, velocity_z
+// density, pressure, velocity_x, velocity_y, velocity_z[, mises_stress]
+constexpr std::size_t kFluidQuantities = 5;
 
 template <class Box>
 bool holds(const Box& box, const config::Vec3& point) {
@@ -37,6 +38,14 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
   // The names each solver's SampleGauges knows (fdm_solver/serve, mpm_solver/serve).
   fdm_ = {"fdm", {}, {"rho", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
   mpm_ = {"mpm", {}, {"density", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
+  // A structure's stress (V5, T Figs. 3.12-3.14): the MPM samples it; an Euler
+  // fluid has no deviatoric stress, so the FDM's samples keep 0.
+  const bool structures =
+      std::any_of(scene.materials.begin(), scene.materials.end(), [](const config::Material& m) {
+        return !std::holds_alternative<config::NoStrength>(m.strength);
+      });
+  if (structures) mpm_.quantities.push_back("mises_stress");
+  quantities_ = structures ? kFluidQuantities + 1 : kFluidQuantities;
   fdm_all_ = fdm_;
   mpm_all_ = mpm_;
   std::vector<io::GaugePoint> points;
@@ -47,16 +56,17 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
     mpm_all_.gauges.push_back(g);
     points.push_back({scene.gauges[g].name, scene.gauges[g].position});
   }
-  sample_.assign(kQuantities * points.size(), 0.0);
+  sample_.assign(quantities_ * points.size(), 0.0);
   if (points.empty()) return;
   const auto interval = scene.output.gauge_interval;
   // The quantities of `fdm_solver run`'s gauges.csv, so its plot tools apply.
-  recorder_.emplace(out_dir, std::move(points),
-                    std::vector<io::GaugeQuantity>{{"density", "kg/m^3"},
-                                                   {"pressure", "Pa"},
-                                                   {"velocity_x", "m/s"},
-                                                   {"velocity_y", "m/s"},
-                                                   {"velocity_z", "m/s"}});
+  std::vector<io::GaugeQuantity> recorded{{"density", "kg/m^3"},
+                                          {"pressure", "Pa"},
+                                          {"velocity_x", "m/s"},
+                                          {"velocity_y", "m/s"},
+                                          {"velocity_z", "m/s"}};
+  if (structures) recorded.push_back({"mises_stress", "Pa"});
+  recorder_.emplace(out_dir, std::move(points), std::move(recorded));
   // Room for the samples up front, so recording does not allocate while stepping.
   if (interval)
     recorder_->reserve(static_cast<std::size_t>(
@@ -118,7 +128,7 @@ void CoupledGauges::record_pressure(double time, std::span<const double> pressur
                 std::to_string(scene_.gauges.size()) + " gauges");
   advance_schedule(time);
   std::fill(sample_.begin(), sample_.end(), 0.0);
-  for (std::size_t g = 0; g < pressure.size(); ++g) sample_[kQuantities * g + 1] = pressure[g];
+  for (std::size_t g = 0; g < pressure.size(); ++g) sample_[quantities_ * g + 1] = pressure[g];
   recorder_->record(time, sample_);
 }
 
@@ -130,10 +140,14 @@ void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
                 std::to_string(part.gauges.size()) + " gauges with " +
                 (result.has_sampled() ? std::to_string(result.sampled().count()) + " samples"
                                       : std::string("another result")));
-  for (std::size_t q = 0; q < kQuantities; ++q) {
+  // A quantity the part does not sample (the FDM's Mises stress) stays 0.
+  for (std::size_t i = 0; i < part.gauges.size(); ++i)
+    for (std::size_t q = part.quantities.size(); q < quantities_; ++q)
+      sample_[quantities_ * part.gauges[i] + q] = 0.0;
+  for (std::size_t q = 0; q < part.quantities.size(); ++q) {
     read_doubles(reply, part.peer, kGroup, part.quantities[q], part.gauges.size(), values_);
     for (std::size_t i = 0; i < part.gauges.size(); ++i)
-      sample_[kQuantities * part.gauges[i] + q] = values_[i];
+      sample_[quantities_ * part.gauges[i] + q] = values_[i];
   }
 }
 

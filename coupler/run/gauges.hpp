@@ -5,7 +5,9 @@
 // (the cell holding it) — through the SampleGauges operation of protocol v1
 // (proto/README.md §6), appended to the step's Exchange. The histories go to
 // <out>/gauges.csv and gauges.h5 in the layout of the standalone solvers
-// (docs/output.md), so the same plot tools read them.
+// (docs/output.md), so the same plot tools read them. A scene with a material
+// that has strength also records mises_stress [Pa], sampled by the MPM (0 in
+// the FDM's fluid).
 
 #include <cstddef>
 #include <filesystem>
@@ -82,7 +84,8 @@ class CoupledGauges {
   bool started_ = false;
   double next_sample_ = 0;
   double pending_time_ = 0;
-  std::vector<double> sample_;  ///< gauge-major: density, pressure, velocity_x|y|z
+  std::size_t quantities_ = 0;  ///< recorded per gauge: 5, or 6 with mises_stress
+  std::vector<double> sample_;  ///< gauge-major: density, pressure, velocity_x|y|z[, mises]
 };
 
 }  // namespace mpfd::coupler

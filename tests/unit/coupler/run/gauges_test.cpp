@@ -168,6 +168,36 @@ TEST(CoupledGauges, A_stage_without_solvers_records_pressure_when_due) {
   EXPECT_THROW(gauges.record_pressure(1.0, std::vector<double>{1.0}), Error);
 }
 
+// V5 (T Figs. 3.12-3.14): a scene with a structure records its Mises stress,
+// which the MPM samples; the FDM's fluid has none (0).
+TEST(CoupledGauges, A_scene_with_a_structure_records_the_MPM_s_Mises_stress) {
+  auto scene = config::parse_scene(tube(""), "tube.yaml");
+  config::Material steel;
+  steel.name = "steel";
+  steel.strength = config::ElasticStrength{};
+  scene.materials.push_back(steel);
+  const auto out = fresh_dir("mises");
+  CoupledGauges gauges(scene, out);
+  cosim::Message fdm, mpm;
+  gauges.add(false, 0.0, GaugeSamplers::owners, fdm, mpm);
+  const auto& mop = mpm.header.exchange().operations(0).sample();
+  const std::vector<std::string> mq(mop.quantities().begin(), mop.quantities().end());
+  EXPECT_EQ(mq.back(), "mises_stress");
+  const auto& fop = fdm.header.exchange().operations(0).sample();
+  const std::vector<std::string> fq(fop.quantities().begin(), fop.quantities().end());
+  EXPECT_EQ(fq.size(), 5u);
+  gauges.read(reply(1, fq, {1.0e5}), reply(1, mq, {2.0e5, 3.0e5}));
+  gauges.flush();
+  std::ifstream csv(out / "gauges.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_THAT(header, HasSubstr("c.mises_stress[Pa]"));
+  EXPECT_THAT(header, HasSubstr("a.mises_stress[Pa]"));
+  // a (FDM): 0; c (MPM): the reply's value for non-pressure quantities (7).
+  EXPECT_THAT(row, HasSubstr(",7"));
+}
+
 TEST(CoupledGauges, Samples_follow_the_gauge_interval) {
   const auto scene = config::parse_scene(tube(", gauge_interval: 1.0e-4"), "tube.yaml");
   CoupledGauges gauges(scene, fresh_dir("interval"));
