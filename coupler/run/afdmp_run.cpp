@@ -388,9 +388,13 @@ class AfdmpLoop {
     cosim::Message message;
     message.header.mutable_write_output()->set_basename(peer + "_" + std::to_string(index));
     hub_.send(peer, std::move(message));
-    (void)hub_.receive_from(peer);
+    const cosim::Message reply = hub_.receive_from(peer);
     contact_[peer] = Clock::now();
-    outputs_.push_back({{"index", index}, {"solver", peer}, {"time", report_.time}});
+    // Each solver numbers its own snapshots: list the files that hold this output.
+    nlohmann::json files = nlohmann::json::array();
+    for (const auto& file : reply.header.output_written().files()) files.push_back(file);
+    outputs_.push_back(
+        {{"index", index}, {"solver", peer}, {"time", report_.time}, {"files", files}});
   }
 
   /// The 1D stage's particles as CSV (radius, density, velocity, specific energy, material).
@@ -409,7 +413,10 @@ class AfdmpLoop {
       out << shells.edges[k] << ',' << shells.edges[k + 1] << ',' << shells.density[k] << ','
           << shells.velocity[k] << ',' << shells.internal_energy[k] << ',' << shells.material[k]
           << '\n';
-    outputs_.push_back({{"index", index}, {"solver", "spherical"}, {"time", report_.time}});
+    outputs_.push_back({{"index", index},
+                        {"solver", "spherical"},
+                        {"time", report_.time},
+                        {"files", {(dir / name.str()).string()}}});
   }
 
   const config::Scene& scene_;
