@@ -57,6 +57,17 @@ class Comparison {
     if (eh.has_shutdown_ack() && eh.shutdown_ack().steps_done() != gh.shutdown_ack().steps_done())
       return "ShutdownAck.steps_done: recorded " + std::to_string(eh.shutdown_ack().steps_done()) +
              ", live " + std::to_string(gh.shutdown_ack().steps_done());
+    if (eh.has_field_import_done()) {
+      const auto& e = eh.field_import_done();
+      const auto& g = gh.field_import_done();
+      if (auto d = number("FieldImportDone.stable_dt", e.stable_dt(), g.stable_dt())) return d;
+      if (e.totals_size() != g.totals_size()) return "FieldImportDone.totals: another count";
+      for (int k = 0; k < e.totals_size(); ++k)
+        if (auto d = number("FieldImportDone.totals[" + std::to_string(k) + "]", e.totals(k),
+                            g.totals(k)))
+          return d;
+      return std::nullopt;
+    }
     if (!eh.has_exchange_result()) return std::nullopt;
     const auto& e = eh.exchange_result().results();
     const auto& g = gh.exchange_result().results();
@@ -164,15 +175,24 @@ ReplayReport replay(const std::filesystem::path& recording, const ReplayOptions&
                                 std::to_string(envelope.sequence()) + ")";
       hub.send(options.solver, std::move(request));
       ++report.requests;
-      std::size_t reply = i + 1;
-      while (reply < records.size() && records[reply].direction != v1::DIRECTION_RECEIVED) ++reply;
-      const cosim::Message live = hub.receive_from(options.solver);
-      if (reply == records.size()) break;
-      if (auto d = Comparison(records[reply].message, live, options.tolerance)
-                       .run(report.values_compared)) {
-        report.divergence = label + ": " + *d;
+      // Every message received before the next request answers this one: one
+      // reply, or a stream of FieldChunks for a FieldExportRequest (proto §15).
+      std::vector<std::size_t> replies;
+      for (std::size_t j = i + 1; j < records.size() && records[j].direction != v1::DIRECTION_SENT;
+           ++j)
+        if (records[j].direction == v1::DIRECTION_RECEIVED) replies.push_back(j);
+      if (replies.empty()) {  // the recording ends before the reply
+        (void)hub.receive_from(options.solver);
         break;
       }
+      for (std::size_t k = 0; k < replies.size() && !report.divergence; ++k) {
+        const cosim::Message live = hub.receive_from(options.solver);
+        if (auto d = Comparison(records[replies[k]].message, live, options.tolerance)
+                         .run(report.values_compared))
+          report.divergence =
+              label + (replies.size() > 1 ? ", reply " + std::to_string(k + 1) : "") + ": " + *d;
+      }
+      if (report.divergence) break;
     }
   } catch (const std::exception& error) {
     solver->finish(std::chrono::milliseconds(0));

@@ -13,6 +13,7 @@
 
 #include "common/core/error.hpp"
 #include "coupler/run/launch.hpp"
+#include "coupler/run/replay.hpp"
 
 namespace mpfd::coupler {
 namespace {
@@ -46,7 +47,8 @@ std::filesystem::path scene_variant(const std::string& name, const std::string& 
 
 nlohmann::json run(const std::filesystem::path& scene, const std::string& out_name,
                    std::uint64_t chunk_bytes = std::uint64_t{64} << 20,
-                   LaunchMode mode = LaunchMode::embedded) {
+                   LaunchMode mode = LaunchMode::embedded,
+                   const std::optional<std::filesystem::path>& record = std::nullopt) {
   LaunchOptions launch;
   launch.mode = mode;
   launch.overwrite = true;
@@ -56,6 +58,7 @@ nlohmann::json run(const std::filesystem::path& scene, const std::string& out_na
   options.out_dir = scene.parent_path() / out_name;
   options.progress = false;
   options.max_chunk_bytes = chunk_bytes;
+  options.record = record;
   (void)launch_run(scene, launch, options, MPFD_FDM_SOLVER);
   std::ifstream in(options.out_dir / "summary.json");
   return nlohmann::json::parse(in);
@@ -171,6 +174,24 @@ TEST(AfdmpRun, Solver_processes_over_ipc_give_the_embedded_result) {
             processes["details"]["afdmp"]["handoffs"][0]["solver_totals"]);
   EXPECT_EQ(read_text(scene.parent_path() / "embedded" / "gauges.csv"),
             read_text(scene.parent_path() / "processes" / "gauges.csv"));
+}
+
+// A recording holds the export streams (several replies to one request) and
+// the imports; each solver replays it bit for bit (proto §10, §15).
+TEST(AfdmpRun, A_recorded_run_replays_bit_for_bit_against_each_solver) {
+  const auto scene = scene_variant(
+      "afdmp_steel_plate_2d", "replay",
+      {{"cells: [1000, 500, 1]", "cells: [100, 50, 1]"}, {"end: 3.0e-4", "end: 7.0e-5"}});
+  const auto recording = scene.parent_path() / "run.mpfdrec";
+  (void)run(scene, "out", std::uint64_t{1} << 16, LaunchMode::embedded, recording);
+  for (const std::string solver : {"fdm", "mpm"}) {
+    ReplayOptions options;
+    options.solver = solver;
+    options.out_dir = scene.parent_path() / ("replay-" + solver);
+    const auto report = replay(recording, options, embedded_serve(solver));
+    EXPECT_FALSE(report.divergence.has_value()) << solver << ": " << *report.divergence;
+    EXPECT_GT(report.values_compared, 1000u) << solver;
+  }
 }
 
 TEST(AfdmpRun, A_scene_the_coupler_cannot_drive_is_refused_before_anything_is_written) {
