@@ -146,6 +146,7 @@ TEST(FieldTransfer, ImportDoneTotalsEqualTheCouplersSumsOfWhatItSent) {
   const v1::FieldImportDone done =
       import_fields(served.hub(), "mpm", "h2", fields, names, 4096, false, kTimeout, &stats);
   EXPECT_EQ(stats.bytes, 132 * n);  // 140 bytes a particle without burn_fraction
+  EXPECT_GT(stats.seconds, 0.0);
   EXPECT_GT(stats.chunks, names.size());
   EXPECT_GT(done.stable_dt(), 0.0);
   ASSERT_EQ(done.totals_size(), 5);
@@ -158,6 +159,21 @@ TEST(FieldTransfer, ImportDoneTotalsEqualTheCouplersSumsOfWhatItSent) {
   const auto back = export_fields(served.hub(), "mpm", "check",
                                   std::vector<std::string>{"inflow/id"}, 0, kTimeout);
   EXPECT_EQ(cosim::find_descriptor(back, "inflow", "id").shape(0), n);
+
+  // The same batch again, one particle moved out of the inflow box: refused, nothing added.
+  const auto& x = cosim::find_descriptor(fields, "inflow", "position");
+  static_cast<double*>(fields.frames.at(x.frame_index()).data())[3 * 17] = 0.6;
+  try {
+    (void)import_fields(served.hub(), "mpm", "h2-again", fields, names, 4096, false, kTimeout);
+    ADD_FAILURE() << "a particle outside its region was imported";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), AllOf(HasSubstr("import"), HasSubstr("solver 'mpm'"),
+                                    HasSubstr("transfer 'h2-again'"), HasSubstr("particle 17"),
+                                    HasSubstr("outside the region's box")));
+  }
+  const auto after = export_fields(served.hub(), "mpm", "check-again",
+                                   std::vector<std::string>{"inflow/id"}, 0, kTimeout);
+  EXPECT_EQ(cosim::find_descriptor(after, "inflow", "id").shape(0), n);
 }
 
 TEST(FieldTransfer, ARefusalNamesTheSolverAndTheField) {
