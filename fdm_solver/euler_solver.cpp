@@ -15,6 +15,7 @@
 #include "fdm_solver/cell_kinematics.hpp"
 #include "fdm_solver/pencil_io.hpp"
 #include "fdm_solver/sweep_kernel.hpp"
+#include "fdm_solver/tracer/tracker_import.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -64,33 +65,49 @@ EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
   for (auto& p : pencils_) p.resize(longest + 2 * kGhost);
   const auto& m = state_.material;
   if (std::any_of(m.begin(), m.end(), [&](std::uint8_t x) { return x != m.front(); })) {
+    allocate_multi_material();
     const std::size_t cells = state_.grid.cell_count();
-    state_.mix_gamma.assign(cells, 0.0);
-    state_.mix_pinf.assign(cells, 0.0);
-    for (auto& v : velocity_) v.assign(cells, 0.0);
-    energy_.assign(cells, 0.0);
-    pressure_.assign(cells, 0.0);
     const std::vector<double> material(m.begin(), m.end());
     parallel_for(cells, [&](std::size_t c) { energy_[c] = specific_internal_energy(state_, c); });
     tracker_.emplace(state_.grid, eos_, material, state_.u[kDensity], energy_,
                      options_.tracers_per_axis);
-    for (int f = 0; f < 6; ++f)
-      tracer_faces_[static_cast<std::size_t>(f)] =
-          boundaries_[static_cast<config::Face>(f)] == config::BoundaryKind::outflow
-              ? TracerFace::outflow
-              : TracerFace::reflect;
     update_materials();
   }
-  box_ = options_.skip_quiet ? disturbed_cells(state_, boundaries_) : whole_grid(state_.grid);
-  quiet_flux_ = quiet_face_flux(state_, boundaries_, eos_);
+  find_still_cells();
   for (int face = 0; face < 6; ++face)
     face_outflow_[static_cast<std::size_t>(face)].assign(
         kVariables * quiet_flux_.flux[static_cast<std::size_t>(face)][0].size(), 0.0);
-  initial_line_limit_.resize(static_cast<std::size_t>(n[1]) * n[2]);
+}
+
+void EulerSolver::allocate_multi_material() {
+  const std::size_t cells = state_.grid.cell_count();
+  state_.mix_gamma.assign(cells, 0.0);
+  state_.mix_pinf.assign(cells, 0.0);
+  for (auto& v : velocity_) v.assign(cells, 0.0);
+  energy_.assign(cells, 0.0);
+  pressure_.assign(cells, 0.0);
+  for (int f = 0; f < 6; ++f)
+    tracer_faces_[static_cast<std::size_t>(f)] =
+        boundaries_[static_cast<config::Face>(f)] == config::BoundaryKind::outflow
+            ? TracerFace::outflow
+            : TracerFace::reflect;
+}
+
+void EulerSolver::find_still_cells() {
+  const auto& n = state_.grid.cells();
+  box_ = options_.skip_quiet ? disturbed_cells(state_, boundaries_) : whole_grid(state_.grid);
+  quiet_flux_ = quiet_face_flux(state_, boundaries_, eos_);
+  still_line_limit_.resize(static_cast<std::size_t>(n[1]) * n[2]);
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
-      initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)] =
+      still_line_limit_[static_cast<std::size_t>(j + n[1] * k)] =
           line_limit(state_.grid.cell_index(0, j, k), 0, n[0]);
+  if (watched_axis_ >= 0) {  // a watched face's cells stay in the box for good
+    ActiveBox faces = whole_grid(state_.grid);
+    faces.lower[watched_axis_] = watched_index_ - 1;
+    faces.upper[watched_axis_] = watched_index_ + 1;
+    (void)state_for_update(faces);
+  }
 }
 
 double EulerSolver::line_limit(std::size_t start, int from, int to) const {
@@ -144,7 +161,7 @@ double EulerSolver::still_limit() const {
       const bool outside = box_.empty() || j < box_.lower[1] || j >= box_.upper[1] ||
                            k < box_.lower[2] || k >= box_.upper[2];
       if (outside) {
-        limit = std::min(limit, initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)]);
+        limit = std::min(limit, still_line_limit_[static_cast<std::size_t>(j + n[1] * k)]);
         continue;
       }
       const std::size_t start = state_.grid.cell_index(0, j, k);
@@ -166,7 +183,7 @@ double EulerSolver::stable_dt() const {
     for (int j = 0; j < n[1]; ++j) {
       const bool still = box_.empty() || j < box_.lower[1] || j >= box_.upper[1] ||
                          k < box_.lower[2] || k >= box_.upper[2];
-      const double line = still ? initial_line_limit_[static_cast<std::size_t>(j + n[1] * k)]
+      const double line = still ? still_line_limit_[static_cast<std::size_t>(j + n[1] * k)]
                                 : line_limit(state_.grid.cell_index(0, j, k), 0, n[0]);
       limit = std::min(limit, line);
     }
@@ -470,14 +487,12 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
   if (tracker_.has_value() != tracker.has_value())
     throw Error(std::string("fdm_solver: restore ") + (tracker ? "with" : "without") +
                 " tracer state into a solver of " + std::to_string(eos_.size()) + " materials");
-  const std::size_t cells = state_.grid.cell_count();
-  if (state.grid.cells() != state_.grid.cells() || state.material.size() != cells ||
+  check_grid_of(state, "restored");
+  if (state.material.size() != state_.material.size() ||
       state.mix_gamma.size() != state_.mix_gamma.size() ||
-      state.mix_pinf.size() != state_.mix_pinf.size() ||
-      std::any_of(state.u.begin(), state.u.end(),
-                  [&](const std::vector<double>& v) { return v.size() != cells; }))
+      state.mix_pinf.size() != state_.mix_pinf.size())
     throw Error("fdm_solver: restored state does not match the solver's grid of " +
-                std::to_string(cells) + " cells");
+                std::to_string(state_.grid.cell_count()) + " cells");
   if (tracker_) {
     tracker_->restore(std::move(*tracker));  // checks before it changes anything
     closure_ = closure_report(tracker_->states());
@@ -495,6 +510,43 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
   // Exactness over speed: every cell is updated from here on (skip_quiet would
   // need the still region, which a checkpoint does not record).
   box_ = whole_grid(state_.grid);
+}
+
+void EulerSolver::check_grid_of(const EulerState& state, const char* what) const {
+  const std::size_t cells = state_.grid.cell_count();
+  if (state.grid.cells() != state_.grid.cells() ||
+      std::any_of(state.u.begin(), state.u.end(),
+                  [&](const std::vector<double>& v) { return v.size() != cells; }))
+    throw Error(std::string("fdm_solver: ") + what + " state does not match the solver's grid of " +
+                std::to_string(cells) + " cells");
+}
+
+void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet> tracers) {
+  check_grid_of(cells, "imported");
+  const std::size_t count = state_.grid.cell_count();
+  std::optional<MultiMaterialTracker> tracker;
+  std::vector<double> energy(count);
+  parallel_for(count, [&](std::size_t c) { energy[c] = specific_internal_energy(cells, c); });
+  if (tracers || tracker_) {
+    // Where the grid holds no tracer at all the cells keep their material.
+    std::vector<int> fallback(count);
+    for (std::size_t c = 0; c < count; ++c)
+      fallback[c] = state_.material[c] == kMixedMaterial ? 0 : state_.material[c];
+    TracerSet points = tracers ? std::move(*tracers) : tracker_->tracers();
+    tracker.emplace(state_.grid, eos_,
+                    tracker_from_points(state_.grid, static_cast<int>(eos_.size()),
+                                        std::move(points), fallback, cells.u[kDensity], energy));
+  }
+  // Nothing below throws (but for memory): the import is all or nothing.
+  if (tracker && !tracker_) allocate_multi_material();
+  state_.u = cells.u;
+  if (tracker) {
+    tracker_ = std::move(tracker);
+    energy_ = std::move(energy);
+    update_materials();
+  }
+  limit_after_step_.reset();
+  find_still_cells();
 }
 
 Totals EulerSolver::totals() const {

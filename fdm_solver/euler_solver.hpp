@@ -78,6 +78,18 @@ class EulerSolver {
   void restore(const EulerState& state, double time, std::int64_t steps, const Totals& outflow,
                std::optional<TrackerState> tracker = std::nullopt);
 
+  /// Takes cells and tracers from outside (an AFDMP handoff, proto/README.md
+  /// §15): the conserved fields of `cells` (on this solver's grid; its
+  /// material and mixture fields are ignored) replace the state's; `tracers`
+  /// (positions and materials; volumes ignored) replace the tracker's, and a
+  /// one-material solver becomes multi-material; without them a tracker is
+  /// rebuilt from the tracers it holds. The tracker starts as
+  /// tracker_from_points() builds it (each material of a cell at the cell's
+  /// state), then the closure gives the pressures. Clock and outflow carry on;
+  /// the disturbed box becomes the cells the new state disturbs (so quiet
+  /// cells stay skipped). Throws mpfd::Error before changing anything.
+  void import_state(const EulerState& cells, std::optional<TracerSet> tracers);
+
   [[nodiscard]] Totals totals() const;
   /// What has left through the domain faces since the start (momentum: the
   /// impulse of walls included).
@@ -115,14 +127,21 @@ class EulerSolver {
   [[nodiscard]] double still_limit() const;
   /// Cell pressures from the tracer closure; mixed cells get their fitted EOS.
   void update_materials();
+  /// Allocates what only a multi-material solver uses (mixture fits, scratch).
+  void allocate_multi_material();
+  /// The disturbed box, the fluxes of still boundary cells and the limits of
+  /// still lines, from the present state (at the start and after an import).
+  void find_still_cells();
+  /// Throws mpfd::Error unless `state`'s conserved fields fit this grid.
+  void check_grid_of(const EulerState& state, const char* what) const;
 
   EulerState state_;
   config::Boundaries boundaries_;
   SolverOptions options_;
   std::vector<eos::AnyEos> eos_;
   ActiveBox box_;
-  std::vector<Pencil> pencils_;             // one per thread
-  std::vector<double> initial_line_limit_;  // min dx/(|u|+c) of each x-line at the start
+  std::vector<Pencil> pencils_;           // one per thread
+  std::vector<double> still_line_limit_;  // min dx/(|u|+c) of each x-line at the start/import
   // min dx/(|u|+c) over the grid after the last step, found in its last
   // sweep; empty where unknown (before a step, after writes from outside).
   std::optional<double> limit_after_step_;

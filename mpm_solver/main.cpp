@@ -1,7 +1,8 @@
 // mpm_solver: the explicit material point method solver. `run SCENE --out DIR`
 // advances a scene on its own (no coupler) and writes the layout of
-// docs/output.md; `serve --endpoint URL` is driven step by step by a coupler
-// (proto/README.md).
+// docs/output.md (a `domain.geometry: spherical` scene runs the 1D spherical
+// MPM, mpm_solver/spherical/spherical_run.hpp); `serve --endpoint URL` is driven step by step by a
+// coupler (proto/README.md).
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
 #include "mpm_solver/serve/serve.hpp"
+#include "mpm_solver/spherical/spherical_run.hpp"
 #include "mpm_solver/standalone_run.hpp"
 
 int main(int argc, char** argv) {
@@ -58,7 +60,10 @@ int main(int argc, char** argv) {
     options.scene_file = scene_file;
     options.out_dir = out_dir;
     const auto scene = mpfd::config::load_scene(scene_file);
-    mpfd::mpm::run_standalone(scene, options);
+    if (scene.domain.geometry == mpfd::config::Geometry::spherical)
+      mpfd::mpm::spherical::run_spherical(scene, {scene_file, out_dir, options.overwrite});
+    else
+      mpfd::mpm::run_standalone(scene, options);
     std::cout << "mpm_solver: '" << scene.name << "' done; output in " << out_dir << "\n";
     return 0;
   } catch (const mpfd::Error& e) {

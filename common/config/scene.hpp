@@ -23,10 +23,14 @@ struct TimeControl {
   int max_steps = 1000000;  ///< the run stops with an error after this many steps
 };
 
+/// spherical: one-dimensional, x is the radius from the origin (seed S; mpm_solver run).
+enum class Geometry { cartesian, spherical };
+
 struct Domain {
   Vec3 lower{};                       ///< [m]
   Vec3 upper{};                       ///< [m], > lower on every axis
   std::array<int, 3> cells{1, 1, 1};  ///< cells per axis; an unused axis has one cell
+  Geometry geometry = Geometry::cartesian;
 };
 
 struct Zone {
@@ -179,10 +183,29 @@ struct MpmOptions {
   std::optional<MpmContact> contact;
 };
 
+/// Phase 1 of AFDMP: the 3D MPM (T §3.2.1) or the 1D spherical MPM (S; T §4.4.3).
+enum class AfdmpStart { mpm, spherical };
+
+/// The 1D spherical detonation stage of `start: spherical` (S), remapped onto the FDM grid.
+struct AfdmpSpherical {
+  std::optional<double> handoff_radius;  ///< [m]; the stage ends when the front reaches it
+  double front_overpressure = 1000.0;    ///< [Pa]; front = outermost r with p - p_ambient >= this
+  std::optional<double> grid_spacing;    ///< [m]; absent: the domain's smallest cell size / 4
+  int particles_per_cell = 2;            ///< [-], >= 2
+  ShapeFunction shape_function = ShapeFunction::gimp;  ///< linear or gimp
+  double cfl = 0.2;                                    ///< [-], in (0, 1]
+};
+
+struct AfdmpOptions {
+  AfdmpStart start = AfdmpStart::mpm;
+  AfdmpSpherical spherical;
+};
+
 struct Solver {
   Method method = Method::fdm;
   FdmOptions fdm;
   MpmOptions mpm;
+  AfdmpOptions afdmp;
 };
 
 struct Scene {

@@ -2,46 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "common/config/check_text.hpp"
+
 namespace mpfd::config {
 namespace {
 
-constexpr const char* kAxes[] = {"x", "y", "z"};
-
 // Coordinates closer than this many cell sizes to a grid line are on it.
 constexpr double kGridTolerance = 1e-6;
-
-// Computed values such as grid lines carry round-off; 12 digits hide it.
-std::string num(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.12g", x);
-  return buffer;
-}
-
-std::string text(const Vec3& v) {
-  std::string out = "[";
-  for (int i = 0; i < 3; ++i) {
-    if (i > 0) out += ", ";
-    out += num(v[i]);
-  }
-  return out + "]";
-}
-
-std::string item(const std::string& list, std::size_t i) {
-  return list + "[" + std::to_string(i) + "]";
-}
-
-std::string domain_text(const Domain& d) {
-  return "the domain " + text(d.lower) + " to " + text(d.upper);
-}
-
-double cell_size(const Domain& d, int axis) {
-  return (d.upper[axis] - d.lower[axis]) / d.cells[axis];
-}
 
 void check_material(const Scene& s, const std::string& name, const std::string& path,
                     Diagnostics& d) {
@@ -160,8 +131,8 @@ void check_zone(const Domain& dom, const Vec3& lower, const Vec3& upper, const s
                 Diagnostics& d) {
   for (int i = 0; i < 3; ++i) {
     if (lower[i] < dom.lower[i] || upper[i] > dom.upper[i]) {
-      d.error(path, "expected a zone inside " + domain_text(dom) + ", got " + kAxes[i] + " from " +
-                        num(lower[i]) + " to " + num(upper[i]));
+      d.error(path, "expected a zone inside " + domain_text(dom) + ", got " + kAxisNames[i] +
+                        " from " + num(lower[i]) + " to " + num(upper[i]));
       return;
     }
   }
@@ -171,7 +142,7 @@ void check_zone(const Domain& dom, const Vec3& lower, const Vec3& upper, const s
       const double k = (corner[i] - dom.lower[i]) / h;
       if (std::abs(k - std::round(k)) > kGridTolerance) {
         d.error(path + "." + key,
-                std::string("expected coordinates on grid lines, got ") + kAxes[i] + " = " +
+                std::string("expected coordinates on grid lines, got ") + kAxisNames[i] + " = " +
                     num(corner[i]) + " between " + num(dom.lower[i] + std::floor(k) * h) + " and " +
                     num(dom.lower[i] + std::ceil(k) * h) + " (cell size " + num(h) + ")");
       }
@@ -205,7 +176,7 @@ void check_zones(const Scene& s, Diagnostics& d) {
     if (cells < z.handshake_width) {
       d.error("zones.handshake_width",
               "expected the fdm and mpm zones to overlap by at least handshake_width = " +
-                  std::to_string(z.handshake_width) + " cells along " + kAxes[i] + ", got " +
+                  std::to_string(z.handshake_width) + " cells along " + kAxisNames[i] + ", got " +
                   std::to_string(std::max(cells, 0L)));
     }
   }
@@ -214,18 +185,18 @@ void check_zones(const Scene& s, Diagnostics& d) {
 // The non-reflecting face and the MPM options that name bodies mean something only to MPM.
 void check_mpm_only(const Scene& s, Diagnostics& d) {
   if (!d.clean("boundaries") || !d.clean("solver")) return;
-  const char* faces[] = {"x_lower", "x_upper", "y_lower", "y_upper", "z_lower", "z_upper"};
   for (std::size_t i = 0; i < 6; ++i) {
     if (s.boundaries.faces[i] == BoundaryKind::non_reflecting && s.solver.method != Method::mpm) {
-      d.error(std::string("boundaries.") + faces[i],
+      d.error(std::string("boundaries.") + kFaceNames[i],
               "non_reflecting is an MPM boundary (W §2.4); expected outflow, wall or symmetry "
               "with solver.method other than mpm");
     }
   }
   // A coupled zone's nodes take the FDM side's loads at the full pressure.
-  if (s.solver.mpm.reference_pressure > 0.0 && s.solver.method != Method::mpm) {
+  if (s.solver.mpm.reference_pressure > 0.0 && s.solver.method != Method::mpm &&
+      s.solver.method != Method::afdmp) {
     d.error("solver.mpm.reference_pressure",
-            "expected 0 with solver.method other than mpm (the coupler's node loads carry the "
+            "expected 0 with solver.method fdm or cfdmp (the coupler's node loads carry the "
             "full pressure), got " +
                 num(s.solver.mpm.reference_pressure));
   }
@@ -253,6 +224,8 @@ void check_scene(const Scene& scene, Diagnostics& diagnostics) {
   if (!diagnostics.clean("domain")) return;
   check_inside_domain(scene, diagnostics);
   check_zones(scene, diagnostics);
+  check_spherical_geometry(scene, diagnostics);
+  check_afdmp(scene, diagnostics);
 }
 
 }  // namespace mpfd::config

@@ -11,4 +11,12 @@ namespace mpfd::config {
 
 void check_scene(const Scene& scene, Diagnostics& diagnostics);
 
+/// domain.geometry: spherical (scene_checks_spherical.cpp): a 1D radial line
+/// of concentric spheres that mpm_solver run advances with the spherical MPM.
+void check_spherical_geometry(const Scene& scene, Diagnostics& diagnostics);
+
+/// solver.method: afdmp (scene_checks_afdmp.cpp): a charge, the FSI zone and
+/// what it holds, and the ball the 1D start of `start: spherical` fills.
+void check_afdmp(const Scene& scene, Diagnostics& diagnostics);
+
 }  // namespace mpfd::config

@@ -33,6 +33,14 @@ std::shared_ptr<const Table<Domain>> domain_table() {
       .required("upper", &Domain::upper, kPoint, "highest corner")
       .required("cells", &Domain::cells, Fixed<Integer, 3>(Integer(Range::at_least(1))),
                 "cells along x, y, z")
+      .optional(
+          "geometry", &Domain::geometry,
+          Enum<Geometry>({{"cartesian", Geometry::cartesian}, {"spherical", Geometry::spherical}}),
+          "spherical: one-dimensional spherical symmetry (S): x is the radius, lower = "
+          "[0, 0, 0], cells [n, 1, 1]; solver.method mpm; bodies and charges are spheres "
+          "centred at the origin; x_lower symmetry (the centre), x_upper outflow (free "
+          "surface) or non_reflecting (transmitting); gauges record the pressure at their "
+          "x; mpm_solver run advances it with the 1D spherical MPM")
       .rule("upper > lower on every axis",
             [](const Domain& d, const Cursor& c) { check_box(d.lower, d.upper, c); });
   return t;
@@ -58,7 +66,9 @@ std::shared_ptr<const Table<Zones>> zones_table() {
   auto t = table<Zones>("zones",
                         "Where each solver works when they are coupled in space (CFDMP, T §4.2). "
                         "Used only by solver.method cfdmp (both zones required) and afdmp (mpm "
-                        "zone only: the FSI zone).");
+                        "zone only: the FSI zone, a slab across the domain with one face inside "
+                        "it, activation_pressure required, holding every body with a strength "
+                        "model and no charge).");
   t->optional("fdm", &Zones::fdm, Nested<Zone>(fdm), "the FDM zone")
       .optional("mpm", &Zones::mpm, Nested<MpmZone>(mpm), "the MPM zone")
       .optional("handshake_width", &Zones::handshake_width, Integer(Range::at_least(1)),
@@ -239,10 +249,44 @@ std::shared_ptr<const Table<Solver>> solver_table() {
                 "p_ref beyond it; a non_reflecting face's far field pushes with its pressure "
                 "less p_ref). Valid where the bodies are surrounded by gas at p_ref, e.g. the "
                 "ambient pressure of air that fills the domain; not with a free surface to "
-                "vacuum. Removes the growth of still 2D air (docs/mpm.md). 0: off; mpm only")
+                "vacuum. Removes the growth of still 2D air (docs/mpm.md). 0: off; mpm and afdmp "
+                "only (the coupler's CFDMP node loads carry the full pressure)")
       .optional("contact", &MpmOptions::contact, Nested<MpmContact>(contact),
                 "multi-velocity-field contact between the bodies; absent: one velocity field "
                 "(no-slip)");
+  auto spherical = table<AfdmpSpherical>(
+      "solver.afdmp.spherical",
+      "The 1D spherical detonation stage of start: spherical (S): the charge detonates in the "
+      "1D spherical MPM until its shock front reaches handoff_radius, then its radial profiles "
+      "are remapped onto the FDM grid.");
+  spherical
+      ->optional("handoff_radius", &AfdmpSpherical::handoff_radius, Number("m", Range::above(0)),
+                 "the stage ends when the front reaches this radius (S: before the wave reaches "
+                 "an interface or a structure); required with start: spherical")
+      .optional("front_overpressure", &AfdmpSpherical::front_overpressure,
+                Number("Pa", Range::above(0)),
+                "the front is the outermost radius where p - p_ambient >= this")
+      .optional("grid_spacing", &AfdmpSpherical::grid_spacing, Number("m", Range::above(0)),
+                "h of the 1D grid; the charge radius must be a multiple of it; absent: the "
+                "domain's smallest cell size / 4")
+      .optional("particles_per_cell", &AfdmpSpherical::particles_per_cell,
+                Integer(Range::at_least(2)), "particles per 1D cell")
+      .optional(
+          "shape_function", &AfdmpSpherical::shape_function,
+          Enum<ShapeFunction>({{"linear", ShapeFunction::linear}, {"gimp", ShapeFunction::gimp}}),
+          "shape functions of the 1D grid (linear peaks do not converge, "
+          "mpm_solver/spherical/README.md)")
+      .optional("cfl", &AfdmpSpherical::cfl, Number("-", Range::open_closed(0, 1)),
+                "Courant number of the 1D stage (strong blasts need <= 0.2, "
+                "mpm_solver/spherical/README.md)");
+  auto afdmp = table<AfdmpOptions>("solver.afdmp", "Options of AFDMP (T §3.2).");
+  afdmp
+      ->optional("start", &AfdmpOptions::start,
+                 Enum<AfdmpStart>({{"mpm", AfdmpStart::mpm}, {"spherical", AfdmpStart::spherical}}),
+                 "phase 1 (the detonation) by the MPM on the scene's grid (T §3.2.1) or by the "
+                 "1D spherical MPM remapped onto the FDM grid (S; T §4.4.3)")
+      .optional("spherical", &AfdmpOptions::spherical, Nested<AfdmpSpherical>(spherical),
+                "the 1D stage of start: spherical");
   auto t = table<Solver>("solver", "Which method runs the scene, and its options.");
   t->optional("method", &Solver::method,
               Enum<Method>({{"fdm", Method::fdm},
@@ -252,7 +296,8 @@ std::shared_ptr<const Table<Solver>> solver_table() {
               "fdm or mpm: one solver on the whole domain; cfdmp: coupled in space by `zones`; "
               "afdmp: alternating in time, T §3.2")
       .optional("fdm", &Solver::fdm, Nested<FdmOptions>(fdm), "FDM options")
-      .optional("mpm", &Solver::mpm, Nested<MpmOptions>(mpm), "MPM options");
+      .optional("mpm", &Solver::mpm, Nested<MpmOptions>(mpm), "MPM options")
+      .optional("afdmp", &Solver::afdmp, Nested<AfdmpOptions>(afdmp), "AFDMP options");
   return t;
 }
 

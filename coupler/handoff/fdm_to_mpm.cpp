@@ -92,22 +92,23 @@ class ParticleWriter {
  public:
   ParticleWriter(const grid::UniformGrid& grid, ParticleSet& out) : grid_(grid), out_(out) {}
 
-  void put(std::size_t p, const grid::Vec3& x, double mass, double energy, const CellState& s,
-           int material) const {
+  void put(std::size_t p, const grid::Vec3& x, double mass, double energy, double volume,
+           const CellState& s, int material) const {
     for (int a = 0; a < 3; ++a) {
       out_.position[a][p] = x[a];
       out_.velocity[a][p] = s.velocity[a];
     }
     out_.mass[p] = mass;
+    out_.volume[p] = volume;
     out_.internal_energy[p] = energy;
     out_.pressure[p] = s.pressure;  // T (3-17): sigma_p = -p_c I
     out_.material[p] = material;
   }
 
   // 2^d particles at x_c +- h / 4 on the active axes (T (3-18)) sharing
-  // `mass` and `energy` equally (T (3-14), (3-16)); returns the next index.
+  // `mass`, `energy` and `volume` equally (T (3-14), (3-16)); returns the next index.
   std::size_t put_regular(std::size_t p, const grid::Index3& cell, double mass, double energy,
-                          const CellState& s, int material) const {
+                          double volume, const CellState& s, int material) const {
     const grid::Vec3 centre = grid_.cell_center(cell);
     const int n = corner_count(grid_);
     for (int corner = 0; corner < n; ++corner) {
@@ -118,7 +119,7 @@ class ParticleWriter {
         x[a] += (((corner >> bit) & 1) ? 0.25 : -0.25) * grid_.spacing()[a];  // T (3-18)
         ++bit;
       }
-      put(p++, x, mass / n, energy / n, s, material);
+      put(p++, x, mass / n, energy / n, volume / n, s, material);
     }
     return p;
   }
@@ -175,12 +176,16 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
     const CellState s = cell_state(state, c, volume);
     std::size_t p = first[c];
     if (state.cell_material[c] != kMixedCell) {
-      writer.put_regular(p, cell, s.mass, s.internal_energy, s, state.cell_material[c]);
+      writer.put_regular(p, cell, s.mass, s.internal_energy, volume, s, state.cell_material[c]);
       continue;
     }
     double raw_mass = 0.0;
-    for (int r = 0; r < state.material_count; ++r)
-      if (theta(r, c) > 0.0) raw_mass += state.material_density[index(r, c)] * theta(r, c);
+    double theta_sum = 0.0;
+    for (int r = 0; r < state.material_count; ++r) {
+      if (!(theta(r, c) > 0.0)) continue;
+      raw_mass += state.material_density[index(r, c)] * theta(r, c);
+      theta_sum += theta(r, c);
+    }
     raw_mass *= volume;
     if (!(raw_mass > 0.0))
       throw Error("fdm_to_mpm: mixed cell " + std::to_string(c) + " holds mass " +
@@ -200,9 +205,10 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
       const std::size_t at = index(r, c);
       const double mass = scale * state.material_density[at] * theta(r, c) * volume;  // T (3-19)
       const double energy = mass * state.material_energy[at] + theta(r, c) * defect;
+      const double material_volume = theta(r, c) / theta_sum * volume;
       const std::size_t nb = tracers_of(r, c);
       if (nb == 0) {
-        p = writer.put_regular(p, cell, mass, energy, s, r);
+        p = writer.put_regular(p, cell, mass, energy, material_volume, s, r);
         continue;
       }
       for (std::size_t i = bins.start[c]; i < bins.start[c + 1]; ++i) {
@@ -210,7 +216,8 @@ ParticleSet fdm_to_mpm(const grid::UniformGrid& grid, const FdmEnd& state) {
         if (state.tracers.material[t] != r) continue;
         const grid::Vec3 x{state.tracers.position[0][t], state.tracers.position[1][t],
                            state.tracers.position[2][t]};
-        writer.put(p++, x, mass / static_cast<double>(nb), energy / static_cast<double>(nb), s,
+        const auto share = static_cast<double>(nb);
+        writer.put(p++, x, mass / share, energy / share, material_volume / share, s,
                    r);  // T (3-19), (3-20)
       }
     }

@@ -19,6 +19,10 @@
 // A material with theta_r > 0 but no tracer in the cell gets 2^d regular
 // particles (T does not say; dropping it would lose its mass). Cells with
 // rho_c = 0 produce no particles.
+// Volumes (T gives none; the MPM needs V_p): V_c / 2^d per regular particle;
+// in a mixed cell theta_r V_c / n_br, with the theta_r normalised by
+// sum_s theta_s like the masses, so that the volumes of every cell's
+// particles sum to V_c whatever the closure's tolerance.
 
 #include <cstddef>
 #include <span>

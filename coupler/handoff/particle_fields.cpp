@@ -27,6 +27,7 @@ void ParticleSet::resize(std::size_t n) {
   for (auto& v : velocity) v.resize(n);
   internal_energy.resize(n);
   pressure.resize(n);
+  volume.resize(n);
   material.resize(n);
 }
 

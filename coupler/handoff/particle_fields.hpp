@@ -27,6 +27,7 @@ struct ParticleSet {
   std::array<std::vector<double>, 3> velocity;
   std::vector<double> internal_energy;  ///< [J]
   std::vector<double> pressure;         ///< p_p [Pa]
+  std::vector<double> volume;           ///< V_p [m^3]; the MPM needs it (fdm_to_mpm.hpp)
   std::vector<int> material;
 
   [[nodiscard]] std::size_t size() const { return mass.size(); }

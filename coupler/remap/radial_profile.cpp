@@ -1,6 +1,7 @@
 #include "coupler/remap/radial_profile.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "common/core/error.hpp"
@@ -44,6 +45,23 @@ void check_profile(const RadialProfile& profile) {
     require_size(profile.radial_stress, shells, "radial_stress");
     require_size(profile.hoop_stress, shells, "hoop_stress");
   }
+}
+
+SphericalTotals profile_totals(const RadialProfile& profile) {
+  check_profile(profile);
+  SphericalTotals t;
+  for (std::size_t k = 0; k + 1 < profile.edges.size(); ++k) {
+    const double r0 = profile.edges[k];
+    const double r1 = profile.edges[k + 1];
+    const double mass =
+        profile.density[k] * (4.0 * std::numbers::pi / 3.0) * (r1 * r1 * r1 - r0 * r0 * r0);
+    const double u = profile.velocity[k];
+    t.mass += mass;
+    t.radial_impulse += mass * u;
+    t.radial_impulse_magnitude += std::abs(mass * u);
+    t.energy += mass * (profile.internal_energy[k] + 0.5 * u * u);
+  }
+  return t;
 }
 
 }  // namespace mpfd::coupler::remap

@@ -23,4 +23,16 @@ struct RadialProfile {
 /// Throws mpfd::Error naming the first inconsistent array or value.
 void check_profile(const RadialProfile& profile);
 
+/// Mass [kg], radial impulse sum m u [kg m/s] and total energy [J] of a
+/// spherical profile: shell k holds rho_k 4 pi (r_{k+1}^3 - r_k^3) / 3.
+struct SphericalTotals {
+  double mass = 0.0;
+  double radial_impulse = 0.0;
+  double energy = 0.0;
+  double radial_impulse_magnitude = 0.0;  ///< sum |m u|, the scale of its round-off
+};
+
+/// The whole profile's totals as a spherical one. Throws as check_profile.
+[[nodiscard]] SphericalTotals profile_totals(const RadialProfile& profile);
+
 }  // namespace mpfd::coupler::remap

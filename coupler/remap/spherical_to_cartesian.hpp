@@ -49,7 +49,8 @@ struct CartesianFields {
 
 /// What the grid holds of the profile: mass [kg], total energy [J] and
 /// radial impulse sum m u [kg m/s], from the shells' exact overlap with the
-/// whole grid box; the profile's own totals are profile_totals().
+/// whole grid box; a spherical profile's own totals are profile_totals()
+/// (radial_profile.hpp).
 struct RemapTotals {
   double mass = 0.0;
   double energy = 0.0;

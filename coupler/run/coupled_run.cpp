@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
-#include <random>
 #include <variant>
 
 #include "common/core/error.hpp"
@@ -15,6 +14,7 @@
 #include "coupler/run/activation.hpp"
 #include "coupler/run/cfdmp_step.hpp"
 #include "coupler/run/gauges.hpp"
+#include "coupler/run/session.hpp"
 #include "coupler/run/wire.hpp"
 
 namespace mpfd::coupler {
@@ -27,26 +27,6 @@ const std::vector<std::string> kMpmOnly = {"mpm"};
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string make_run_id() {
-  std::random_device device;
-  char text[17];
-  std::snprintf(text, sizeof text, "%08x%08x", device(), device());
-  return text;
-}
-
-v1::UniformGrid wire_grid(const config::Scene& scene) {
-  v1::UniformGrid grid;
-  int dimension = 0;
-  for (int a = 0; a < 3; ++a) {
-    grid.add_origin(scene.domain.lower[a]);
-    grid.add_spacing((scene.domain.upper[a] - scene.domain.lower[a]) / scene.domain.cells[a]);
-    grid.add_cells(static_cast<std::uint64_t>(scene.domain.cells[a]));
-    dimension += scene.domain.cells[a] > 1 ? 1 : 0;
-  }
-  grid.set_dimension(static_cast<std::uint32_t>(dimension));
-  return grid;
 }
 
 /// The Setup of each solver (proto §5, regions of §6).
@@ -107,13 +87,6 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   return messages;
 }
 
-double advance_seconds(const cosim::Message& reply) {
-  if (!reply.header.has_exchange_result()) return 0;
-  for (const auto& result : reply.header.exchange_result().results())
-    if (result.has_advanced()) return result.advanced().wall_seconds();
-  return 0;
-}
-
 Totals sum(std::initializer_list<Totals> parts) {
   Totals t;
   for (const Totals& part : parts) {
@@ -122,11 +95,6 @@ Totals sum(std::initializer_list<Totals> parts) {
     for (int k = 0; k < 3; ++k) t.momentum[k] += part.momentum[k];
   }
   return t;
-}
-
-bool offers(const v1::Hello& hello, std::string_view capability) {
-  const auto& list = hello.capabilities();
-  return std::find(list.begin(), list.end(), capability) != list.end();
 }
 
 std::vector<io::ConservationEntry> audit(const Totals& initial, const Totals& now,
@@ -267,8 +235,9 @@ class Loop {
     clear_for_reuse(fdm_request_);
     clear_for_reuse(mpm_request_);
     step_.build(plan, fdm_request_, mpm_request_);
-    gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time, plan.mpm,
-                fdm_request_, mpm_request_);
+    gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time,
+                plan.mpm ? GaugeSamplers::owners : GaugeSamplers::fdm_only, fdm_request_,
+                mpm_request_);
     hub_.send_keeping_header("fdm", fdm_request_);
     if (plan.mpm) hub_.send_keeping_header("mpm", mpm_request_);
     auto replies = hub_.gather(peers());
@@ -372,26 +341,6 @@ CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout,
     loop.record_summary("failed", 0);
     throw;
   }
-}
-
-/// Best effort: Shutdown to every solver still there, then end the ones we started.
-std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
-                      const std::string& reason) {
-  for (const auto& solver : solvers) {
-    if (solver->ended()) continue;
-    try {
-      cosim::Message message;
-      message.header.mutable_shutdown()->set_reason(reason);
-      hub.send(solver->name(), std::move(message));
-      (void)hub.receive_from(solver->name());
-    } catch (const std::exception&) {
-      // It is gone or broken; finish() below ends it.
-    }
-  }
-  std::string how;
-  for (const auto& solver : solvers)
-    how += "; solver '" + solver->name() + "' " + solver->finish(std::chrono::milliseconds(2000));
-  return how;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "coupler/run/gauges.hpp"
 
 #include <algorithm>
+#include <span>
 
 #include "common/core/error.hpp"
 #include "coupler/run/wire.hpp"
@@ -21,6 +22,7 @@ bool holds(const Box& box, const config::Vec3& point) {
 }  // namespace
 
 std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge) {
+  if (scene.solver.method == config::Method::afdmp) return "phase";
   if (scene.zones && scene.zones->mpm && holds(*scene.zones->mpm, gauge.position)) return "mpm";
   if (scene.zones && scene.zones->fdm && holds(*scene.zones->fdm, gauge.position)) return "fdm";
   throw Error("scene '" + scene.name + "': gauge '" + gauge.name + "' at (" +
@@ -36,11 +38,13 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
   fdm_ = {"fdm", {}, {"rho", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
   mpm_ = {"mpm", {}, {"density", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
   fdm_all_ = fdm_;
+  mpm_all_ = mpm_;
   std::vector<io::GaugePoint> points;
   for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
     owners_.push_back(gauge_owner(scene, scene.gauges[g]));
     (owners_.back() == "mpm" ? mpm_ : fdm_).gauges.push_back(g);
     fdm_all_.gauges.push_back(g);
+    mpm_all_.gauges.push_back(g);
     points.push_back({scene.gauges[g].name, scene.gauges[g].position});
   }
   sample_.assign(kQuantities * points.size(), 0.0);
@@ -73,24 +77,49 @@ void CoupledGauges::add_to(Part& part, cosim::Message& request) {
   for (const auto& q : part.quantities) op.add_quantities(q);
 }
 
-void CoupledGauges::add(bool advance, double time, bool mpm_awake, cosim::Message& fdm,
-                        cosim::Message& mpm) {
-  fdm_.operation = mpm_.operation = fdm_all_.operation = -1;
-  if (!recorder_ || (!advance && started_)) return;
+bool CoupledGauges::due(double time) const {
+  if (!recorder_) return false;
   const auto interval = scene_.output.gauge_interval;
+  return !started_ || !interval || time >= next_sample_ * (1 - 1e-12);
+}
+
+void CoupledGauges::advance_schedule(double time) {
+  started_ = true;
   // As the standalone loop (common/io/standalone_loop.hpp): the first step end at
   // or past each multiple of the interval.
-  if (started_ && interval && time < next_sample_ * (1 - 1e-12)) return;
-  started_ = true;
-  if (interval)
+  if (const auto interval = scene_.output.gauge_interval)
     while (next_sample_ <= time * (1 + 1e-12)) next_sample_ += *interval;
   pending_time_ = time;
-  if (!mpm_awake) {
-    add_to(fdm_all_, fdm);
-    return;
+}
+
+void CoupledGauges::add(bool advance, double time, GaugeSamplers samplers, cosim::Message& fdm,
+                        cosim::Message& mpm) {
+  fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = -1;
+  if ((!advance && started_) || !due(time)) return;
+  advance_schedule(time);
+  switch (samplers) {
+    case GaugeSamplers::owners:
+      add_to(fdm_, fdm);
+      add_to(mpm_, mpm);
+      break;
+    case GaugeSamplers::fdm_only:
+      add_to(fdm_all_, fdm);
+      break;
+    case GaugeSamplers::mpm_only:
+      add_to(mpm_all_, mpm);
+      break;
   }
-  add_to(fdm_, fdm);
-  add_to(mpm_, mpm);
+}
+
+void CoupledGauges::record_pressure(double time, std::span<const double> pressure) {
+  if (!due(time)) return;
+  if (pressure.size() != scene_.gauges.size())
+    throw Error("gauge pressures: " + std::to_string(pressure.size()) + " values for " +
+                std::to_string(scene_.gauges.size()) + " gauges");
+  advance_schedule(time);
+  std::fill(sample_.begin(), sample_.end(), 0.0);
+  for (std::size_t g = 0; g < pressure.size(); ++g) sample_[kQuantities * g + 1] = pressure[g];
+  recorder_->record(time, sample_);
 }
 
 void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
@@ -109,12 +138,14 @@ void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
 }
 
 void CoupledGauges::read(const cosim::Message& fdm, const cosim::Message& mpm) {
-  if (fdm_.operation < 0 && mpm_.operation < 0 && fdm_all_.operation < 0) return;
+  if (fdm_.operation < 0 && mpm_.operation < 0 && fdm_all_.operation < 0 && mpm_all_.operation < 0)
+    return;
   read_from(fdm_all_, fdm);
+  read_from(mpm_all_, mpm);
   read_from(fdm_, fdm);
   read_from(mpm_, mpm);
   recorder_->record(pending_time_, sample_);
-  fdm_.operation = mpm_.operation = fdm_all_.operation = -1;
+  fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = -1;
 }
 
 void CoupledGauges::flush() {

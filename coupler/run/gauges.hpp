@@ -22,7 +22,15 @@ namespace mpfd::coupler {
 
 /// "mpm" for a point in the scene's MPM zone (bounds included), "fdm" for one
 /// elsewhere in the FDM zone. Throws mpfd::Error naming the gauge when neither holds it.
+/// An AFDMP scene's gauges have no owner ("phase"): each phase's solver samples them all.
 std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge);
+
+/// Which solvers sample the gauges of a step.
+enum class GaugeSamplers {
+  owners,    ///< each gauge by the solver whose zone holds it (CFDMP, both awake)
+  fdm_only,  ///< every gauge by the FDM (CFDMP while the MPM zone sleeps; AFDMP phase 2)
+  mpm_only,  ///< every gauge by the MPM (AFDMP phases 1 and 3)
+};
 
 class CoupledGauges {
  public:
@@ -31,13 +39,19 @@ class CoupledGauges {
 
   /// Appends SampleGauges to the requests of a step that ends at `time` [s] when a
   /// sample is due then (every step, or every output.gauge_interval); a request
-  /// gets it only if its solver owns a gauge. `advance`: false for an exchange
-  /// that does not move time (only the first one samples). `mpm_awake`: false
-  /// while the MPM zone sleeps (activation.hpp); the FDM, which then runs the
-  /// zone's cells, samples every gauge.
-  void add(bool advance, double time, bool mpm_awake, cosim::Message& fdm, cosim::Message& mpm);
-  /// Records the sample asked for by the last add() from the two replies.
+  /// gets it only if its solver samples a gauge (`samplers`). `advance`: false for
+  /// an exchange that does not move time (only the first one samples).
+  void add(bool advance, double time, GaugeSamplers samplers, cosim::Message& fdm,
+           cosim::Message& mpm);
+  /// Records the sample asked for by the last add() from the replies (a solver
+  /// that was asked nothing may pass an empty Message).
   void read(const cosim::Message& fdm, const cosim::Message& mpm);
+  /// True when a sample is due at `time` (as add() decides); for a stage that
+  /// samples without solvers (AFDMP's 1D spherical start).
+  [[nodiscard]] bool due(double time) const;
+  /// Records pressure [Pa] at every gauge at `time` (density and velocity 0: a
+  /// stage that knows only pressure); call when due(time).
+  void record_pressure(double time, std::span<const double> pressure);
   /// Writes gauges.h5 with every sample so far and flushes the CSV.
   void flush();
 
@@ -61,7 +75,9 @@ class CoupledGauges {
   std::optional<io::GaugeRecorder> recorder_;
   std::vector<std::string> owners_;
   Part fdm_, mpm_;
-  Part fdm_all_;                ///< every gauge, sampled by the FDM while the MPM sleeps
+  Part fdm_all_;  ///< every gauge, sampled by the FDM
+  Part mpm_all_;  ///< every gauge, sampled by the MPM
+  void advance_schedule(double time);
   std::vector<double> values_;  ///< one quantity of a reply
   bool started_ = false;
   double next_sample_ = 0;

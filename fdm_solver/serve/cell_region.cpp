@@ -31,6 +31,10 @@ bool CellRegion::declares(Quantity q) const {
   return std::find(quantities.begin(), quantities.end(), q) != quantities.end();
 }
 
+bool CellRegion::declares(MaterialQuantity q) const {
+  return std::find(material_fields.begin(), material_fields.end(), q) != material_fields.end();
+}
+
 CellRegion make_cell_region(const cosim::v1::Region& region, const grid::UniformGrid& grid) {
   if (region.name().empty()) reject(region, grid, "a region needs a name");
   const bool faces = region.kind() == cosim::v1::REGION_KIND_FACES;
@@ -80,18 +84,24 @@ CellRegion make_cell_region(const cosim::v1::Region& region, const grid::Uniform
       cells.fluxes.push_back(*flux);
       continue;
     }
+    if (const auto m = faces ? std::nullopt : find_material_quantity(name)) {
+      cells.material_fields.push_back(*m);
+      continue;
+    }
     const auto q = faces ? std::nullopt : find_quantity(name);
     if (!q)
       reject(region, grid,
              "unknown quantity '" + name + "'; known: " +
                  (faces ? "crossed_mass, crossed_momentum, crossed_energy"
-                        : quantity_names() + ", outflow_mass, outflow_momentum, outflow_energy"));
+                        : quantity_names() +
+                              ", outflow_mass, outflow_momentum, outflow_energy, cell_material, "
+                              "volume_fraction, material_density, material_energy"));
     cells.quantities.push_back(*q);
   }
   if (faces && cells.fluxes.empty())
     cells.fluxes = {FluxQuantity::crossed_mass, FluxQuantity::crossed_momentum,
                     FluxQuantity::crossed_energy};
-  if (!faces && cells.quantities.empty() && cells.fluxes.empty())
+  if (!faces && cells.quantities.empty() && cells.fluxes.empty() && cells.material_fields.empty())
     cells.quantities = {Quantity::rho, Quantity::momentum, Quantity::energy};
   return cells;
 }

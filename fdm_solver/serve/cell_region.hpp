@@ -12,6 +12,7 @@
 #include "fdm_solver/active_box.hpp"
 #include "fdm_solver/serve/cell_quantities.hpp"
 #include "fdm_solver/serve/flux_quantities_fwd.hpp"
+#include "fdm_solver/serve/material_quantities.hpp"
 
 namespace mpfd::fdm {
 
@@ -19,16 +20,19 @@ struct CellRegion {
   std::string name;
   ActiveBox box;  ///< FACES: the cells above the faces (one layer along face_axis)
   std::vector<Quantity> quantities;
-  std::vector<FluxQuantity> fluxes;  ///< v1.1 amounts (flux_quantities.hpp)
-  int face_axis = -1;                ///< REGION_KIND_FACES: the faces' normal; CELLS: -1
+  std::vector<FluxQuantity> fluxes;               ///< v1.1 amounts (flux_quantities.hpp)
+  std::vector<MaterialQuantity> material_fields;  ///< v1.2, export only
+  int face_axis = -1;  ///< REGION_KIND_FACES: the faces' normal; CELLS: -1
 
   [[nodiscard]] std::size_t cell_count() const { return static_cast<std::size_t>(box.cells()); }
   [[nodiscard]] bool declares(Quantity q) const;
+  [[nodiscard]] bool declares(MaterialQuantity q) const;
 };
 
 /// Checks a Setup region against `grid`: kind CELLS, a box of 1 to 3 axes
 /// (axes it leaves out must have one cell) with 0 <= lo < hi <= cells, and
-/// known quantities (none given: rho, momentum, E); or kind FACES (v1.1): a
+/// known quantities (none given: rho, momentum, E; v1.2 adds the per-material
+/// ones of material_quantities.hpp); or kind FACES (v1.1): a
 /// box one thick along an active face_axis, 0 < lo there (faces between two
 /// cells), with crossed_* quantities only (none given: all three). Throws
 /// cosim::ProtocolError{UNKNOWN_REGION} naming the region, its box and the grid.

@@ -53,6 +53,13 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
         result.set_applied(true);
         break;
       case cosim::v1::Operation::kExportRegion: {
+        if (const TracerRegion* tracers = zone.tracer_region(op.export_region().region())) {
+          const auto& asked = op.export_region().quantities();
+          const std::vector<std::string> names(asked.begin(), asked.end());
+          result.mutable_exported()->set_region(tracers->name);
+          result.mutable_exported()->set_count(export_tracers(zone.solver, *tracers, names, reply));
+          break;
+        }
         const auto& region = zone.region(op.export_region().region(), "ExportRegion");
         result.mutable_exported()->set_region(region.name);
         result.mutable_exported()->set_count(

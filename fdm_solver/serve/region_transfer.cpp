@@ -98,12 +98,18 @@ std::uint64_t export_region(EulerSolver& solver, const CellRegion& region,
   if (request.quantities().empty()) {
     for (const Quantity q : region.quantities) export_one(q);
     for (const FluxQuantity q : region.fluxes) export_flux(solver, region, q, reply);
+    for (const MaterialQuantity q : region.material_fields)
+      export_material_quantity(solver, region.name, region.box, q, reply);
   }
   for (const auto& name : request.quantities()) {
     if (const auto flux = find_flux_quantity(name);
         flux &&
         std::find(region.fluxes.begin(), region.fluxes.end(), *flux) != region.fluxes.end()) {
       export_flux(solver, region, *flux, reply);
+      continue;
+    }
+    if (const auto m = find_material_quantity(name); m && region.declares(*m)) {
+      export_material_quantity(solver, region.name, region.box, *m, reply);
       continue;
     }
     const auto q = find_quantity(name);

@@ -3,12 +3,15 @@
 #include <unistd.h>
 
 #include <memory>
+#include <vector>
 
 #include "common/core/log.hpp"
 #include "cosim/participant.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/checkpoint.hpp"
 #include "fdm_solver/serve/exchange.hpp"
+#include "fdm_solver/serve/field_export.hpp"
+#include "fdm_solver/serve/field_import.hpp"
 #include "fdm_solver/serve/served_zone.hpp"
 
 namespace mpfd::fdm {
@@ -24,8 +27,9 @@ cosim::v1::Hello hello(bool v1_0_only) {
   hello.set_max_major(cosim::protocol_major);
   for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint"})
     hello.add_capabilities(capability);
-  if (!v1_0_only)  // v1.1, proto/README.md §14
-    for (const char* capability : {"face_crossing", "boundary_outflow"})
+  if (!v1_0_only)  // v1.1 (proto/README.md §14) and v1.2 (§15)
+    for (const char* capability :
+         {"face_crossing", "boundary_outflow", "field_chunks", "tracer_regions", "material_fields"})
       hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
@@ -33,25 +37,33 @@ cosim::v1::Hello hello(bool v1_0_only) {
   return hello;
 }
 
-/// The reply to any request but Shutdown (and Ping, which Participant answers).
-cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& request) {
+/// The replies to any request but Shutdown (and Ping, which Participant
+/// answers): one, or the FieldChunks of a FieldExportRequest.
+std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
+                                   const cosim::Message& request) {
   const auto& header = request.header;
   const std::string_view body = cosim::body_name(header);  // only for messages
-  if (header.has_field_export() || header.has_field_chunk() || header.has_field_import_commit())
-    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
-                               "fdm_solver serve does not support '" + std::string(body) +
-                                   "' (not in its Hello capabilities); the solver carries on",
-                               false);
+  const bool fields =
+      header.has_field_export() || header.has_field_chunk() || header.has_field_import_commit();
   if (!header.has_setup() && !header.has_exchange() && !header.has_write_output() &&
-      !header.has_checkpoint() && !header.has_restore() && !header.has_activate())
+      !header.has_checkpoint() && !header.has_restore() && !header.has_activate() && !fields)
     throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNEXPECTED,
                                "'" + std::string(body) + "' is not a request to a solver");
   if (header.has_setup() == (zone != nullptr))
     throw cosim::ProtocolError(
         cosim::v1::ERROR_CODE_UNEXPECTED,
         zone ? "a second Setup" : "'" + std::string(body) + "' before Setup");
+  if (header.has_field_export()) return export_fields(*zone, request);
   cosim::Message reply;
-  if (header.has_setup()) {
+  if (header.has_field_chunk()) {
+    reply = add_import_chunk(*zone, request);
+  } else if (header.has_field_import_commit()) {
+    reply = commit_import(*zone, request);
+    Logger("fdm.serve")
+        .info("import '", header.field_import_commit().transfer_id(),
+              "' committed at t = ", zone->time(), " s, stable dt ",
+              reply.header.field_import_done().stable_dt(), " s");
+  } else if (header.has_setup()) {
     zone = set_up_zone(header.setup());
     *reply.header.mutable_setup_ack() = setup_ack(header.setup(), *zone);
     Logger("fdm.serve")
@@ -69,7 +81,9 @@ cosim::Message answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& r
   } else {
     reply.header.mutable_activate_ack()->set_stable_dt(zone->solver.stable_dt());
   }
-  return reply;
+  std::vector<cosim::Message> replies;
+  replies.push_back(std::move(reply));
+  return replies;
 }
 
 /// Answers `request` with Error. A fatal one is sent best effort (the coupler
@@ -121,7 +135,7 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
       return;
     }
     try {
-      participant.reply(request, answer(zone, request));
+      for (auto& reply : answer(zone, request)) participant.reply(request, std::move(reply));
     } catch (const cosim::ProtocolError& error) {
       report_error(participant, request, error.code(), error.what(), error.fatal());
     } catch (const std::exception& error) {

@@ -55,12 +55,24 @@ ServedZone::ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup)
 
 const CellRegion& ServedZone::region(const std::string& name, std::string_view operation) const {
   if (const auto found = regions.find(name); found != regions.end()) return found->second;
+  unknown_region(name, operation);
+}
+
+const TracerRegion* ServedZone::tracer_region(std::string_view name) const {
+  const auto found = tracer_regions.find(name);
+  return found == tracer_regions.end() ? nullptr : &found->second;
+}
+
+void ServedZone::unknown_region(std::string_view name, std::string_view operation,
+                                bool fatal) const {
   std::string known;
   for (const auto& [key, value] : regions) known += (known.empty() ? "" : ", ") + key;
+  for (const auto& [key, value] : tracer_regions) known += (known.empty() ? "" : ", ") + key;
   throw cosim::ProtocolError(
       cosim::v1::ERROR_CODE_UNKNOWN_REGION,
-      std::string(operation) + ": region '" + name +
-          "' was not declared in Setup; declared: " + (known.empty() ? "none" : known));
+      std::string(operation) + ": region '" + std::string(name) +
+          "' was not declared in Setup; declared: " + (known.empty() ? "none" : known),
+      fatal);
 }
 
 std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup) {
@@ -76,9 +88,14 @@ std::unique_ptr<ServedZone> set_up_zone(const cosim::v1::Setup& setup) {
   const auto& grid = zone->solver.state().grid;
   check_zone_grid(setup.zone().grid(), grid);
   for (const auto& region : setup.regions()) {
+    if (zone->regions.contains(region.name()) || zone->tracer_regions.contains(region.name()))
+      reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+             "region '" + region.name() + "' is declared twice");
+    if (region.kind() == cosim::v1::REGION_KIND_TRACERS) {  // v1.2
+      zone->tracer_regions.emplace(region.name(), make_tracer_region(region, grid));
+      continue;
+    }
     CellRegion cells = make_cell_region(region, grid);
-    if (zone->regions.contains(cells.name))
-      reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, "region '" + cells.name + "' is declared twice");
     if (cells.face_axis >= 0) {  // v1.1: the solver counts what crosses these faces
       if (!zone->solver.watched_crossing().empty())
         reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
@@ -96,9 +113,16 @@ cosim::v1::SetupAck setup_ack(const cosim::v1::Setup& setup, const ServedZone& z
     auto& echo = *ack.add_regions();
     echo = declared;
     echo.clear_quantities();
+    if (const TracerRegion* tracers = zone.tracer_region(declared.name())) {
+      for (const TracerQuantity q : tracers->quantities)
+        echo.add_quantities(std::string(tracer_quantity_name(q)));
+      continue;
+    }
     const CellRegion& region = zone.regions.at(declared.name());
     for (const Quantity q : region.quantities) echo.add_quantities(std::string(info(q).name));
     for (const FluxQuantity q : region.fluxes) echo.add_quantities(std::string(info(q).name));
+    for (const MaterialQuantity q : region.material_fields)
+      echo.add_quantities(std::string(material_quantity_name(q)));
   }
   ack.set_stable_dt(zone.solver.stable_dt());
   return ack;

@@ -93,6 +93,15 @@ MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
   fill_queue_.reserve(grid_.cell_count());
 }
 
+MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
+                                           std::vector<eos::AnyEos> materials, TrackerState state)
+    : grid_(grid), eos_(std::move(materials)) {
+  if (eos_.empty()) throw Error("multi-material tracker: needs at least one material EOS");
+  for (const eos::AnyEos& e : eos_) eos::validate(e);
+  restore(std::move(state));
+  fill_queue_.reserve(grid_.cell_count());
+}
+
 AdvectionReport MultiMaterialTracker::advect(const VelocityView& velocity, double dt,
                                              const TracerBoundaries& faces) {
   const AdvectionReport report = advect_tracers(grid_, velocity, dt, faces, tracers_);

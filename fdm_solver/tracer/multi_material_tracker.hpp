@@ -46,6 +46,10 @@ class MultiMaterialTracker {
   MultiMaterialTracker(const grid::UniformGrid& grid, std::vector<eos::AnyEos> materials,
                        std::span<const double> cell_material, std::span<const double> density,
                        std::span<const double> energy, int tracers_per_axis);
+  /// A tracker that continues from `state` (as restore(); e.g. built by
+  /// tracker_from_points). Throws mpfd::Error as restore() and the constructor above.
+  MultiMaterialTracker(const grid::UniformGrid& grid, std::vector<eos::AnyEos> materials,
+                       TrackerState state);
 
   /// Step part 1; see the file comment.
   AdvectionReport advect(const VelocityView& velocity, double dt, const TracerBoundaries& faces);

@@ -29,7 +29,8 @@ std::string vec(const grid::Vec3& v) {
 
 constexpr const char* kFaceName[] = {"x_lower", "x_upper", "y_lower",
                                      "y_upper", "z_lower", "z_upper"};
-constexpr const char* kBoundaryName[] = {"outflow", "wall", "symmetry"};
+// In config::BoundaryKind order.
+constexpr const char* kBoundaryName[] = {"outflow", "wall", "symmetry", "non_reflecting"};
 
 /// The cell fields of a snapshot, in the names and units of docs/output.md.
 std::vector<io::FieldView> field_views(const initial::CellFields& f) {

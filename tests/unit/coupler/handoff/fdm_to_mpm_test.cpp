@@ -125,6 +125,32 @@ TEST_P(FdmToMpmDimension, Single_material_cells_get_2_to_the_d_regular_particles
   }
 }
 
+// The MPM needs particle volumes: V_c / 2^d per regular particle,
+// theta_r V_c / n_br per tracer particle with the theta_r normalised (here
+// they sum to 1.01 in the mixed cells, a closure off by 1 %), so every cell's
+// particles fill exactly its volume.
+TEST_P(FdmToMpmDimension, VolumesSumToCellVolume) {
+  const grid::UniformGrid grid = test::test_grid(GetParam());
+  Phase2State state = random_state(grid, 33u + GetParam());
+  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+    if (state.cell_material[c] == kMixedCell) state.theta[2 * c + 1] += 0.01;
+  const ParticleSet particles = fdm_to_mpm(grid, state.view());
+  std::vector<double> filled(grid.cell_count(), 0.0);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const auto where =
+        grid.locate({particles.position[0][p], particles.position[1][p], particles.position[2][p]});
+    ASSERT_TRUE(where.has_value());
+    filled[grid.cell_index(where->cell)] += particles.volume[p];
+  }
+  const double v_c = grid.cell_volume();
+  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+    EXPECT_NEAR(filled[c], v_c, 1e-15 * v_c) << "cell " << c;
+  // Cell 0 is mixed: its 3 tracers of material 0 come first.
+  ASSERT_EQ(state.cell_material[0], kMixedCell);
+  const double theta0 = state.theta[0] / (state.theta[0] + state.theta[1]);
+  EXPECT_NEAR(particles.volume[0], theta0 * v_c / 3.0, 1e-15 * v_c);
+}
+
 INSTANTIATE_TEST_SUITE_P(Dimensions, FdmToMpmDimension, ::testing::Values(1, 2, 3));
 
 TEST(FdmToMpm, Mixed_cell_tracers_become_particles_sharing_by_volume_fraction_T_3_19) {

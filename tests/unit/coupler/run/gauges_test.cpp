@@ -80,7 +80,7 @@ TEST(CoupledGauges, A_step_asks_each_owner_and_the_histories_use_the_standalone_
   CoupledGauges gauges(scene, out);
   cosim::Message fdm, mpm;
   fdm.header.mutable_exchange()->add_operations()->mutable_propose_dt();
-  gauges.add(false, 0.0, true, fdm, mpm);  // step 0 samples t = 0
+  gauges.add(false, 0.0, GaugeSamplers::owners, fdm, mpm);  // step 0 samples t = 0
   ASSERT_EQ(fdm.header.exchange().operations_size(), 2);
   const auto& fdm_op = fdm.header.exchange().operations(1).sample();
   EXPECT_EQ(fdm_op.group(), "gauges");
@@ -99,11 +99,11 @@ TEST(CoupledGauges, A_step_asks_each_owner_and_the_histories_use_the_standalone_
   gauges.read(reply(2, fq, {1.0e5}), reply(1, mq, {2.0e5, 3.0e5}));
   // An exchange that does not advance (before an output) takes no sample.
   cosim::Message fdm2, mpm2;
-  gauges.add(false, 0.0, true, fdm2, mpm2);
+  gauges.add(false, 0.0, GaugeSamplers::owners, fdm2, mpm2);
   EXPECT_EQ(fdm2.header.exchange().operations_size(), 0);
   gauges.read(fdm2, mpm2);
   cosim::Message fdm3, mpm3;
-  gauges.add(true, 1.0e-4, true, fdm3, mpm3);
+  gauges.add(true, 1.0e-4, GaugeSamplers::owners, fdm3, mpm3);
   gauges.read(reply(1, fq, {4.0e5}), reply(1, mq, {5.0e5, 6.0e5}));
   gauges.flush();
   EXPECT_EQ(gauges.sample_count(), 2u);
@@ -130,7 +130,7 @@ TEST(CoupledGauges, The_FDM_samples_every_gauge_while_the_MPM_zone_sleeps) {
   const auto scene = config::parse_scene(tube(""), "tube.yaml");
   CoupledGauges gauges(scene, fresh_dir("dormant"));
   cosim::Message fdm, mpm;
-  gauges.add(false, 0.0, false, fdm, mpm);
+  gauges.add(false, 0.0, GaugeSamplers::fdm_only, fdm, mpm);
   ASSERT_EQ(fdm.header.exchange().operations_size(), 1);
   EXPECT_EQ(mpm.header.exchange().operations_size(), 0);
   const auto& op = fdm.header.exchange().operations(0).sample();
@@ -141,6 +141,33 @@ TEST(CoupledGauges, The_FDM_samples_every_gauge_while_the_MPM_zone_sleeps) {
   EXPECT_EQ(gauges.sample_count(), 1u);
 }
 
+// AFDMP's phases 1 and 3 run the MPM over the whole domain: it samples every gauge.
+TEST(CoupledGauges, The_MPM_samples_every_gauge_in_an_MPM_phase) {
+  const auto scene = config::parse_scene(tube(""), "tube.yaml");
+  CoupledGauges gauges(scene, fresh_dir("mpm-phase"));
+  cosim::Message fdm, mpm;
+  gauges.add(false, 0.0, GaugeSamplers::mpm_only, fdm, mpm);
+  EXPECT_EQ(fdm.header.exchange().operations_size(), 0);
+  ASSERT_EQ(mpm.header.exchange().operations_size(), 1);
+  const auto& op = mpm.header.exchange().operations(0).sample();
+  ASSERT_EQ(op.gauge_names_size(), 3);
+  const std::vector<std::string> mq(op.quantities().begin(), op.quantities().end());
+  gauges.read(cosim::Message{}, reply(1, mq, {1.0e5, 2.0e5, 3.0e5}));
+  EXPECT_EQ(gauges.sample_count(), 1u);
+}
+
+// AFDMP's 1D spherical start knows pressure only; it records it on the same schedule.
+TEST(CoupledGauges, A_stage_without_solvers_records_pressure_when_due) {
+  const auto scene = config::parse_scene(tube(", gauge_interval: 1.0e-4"), "tube.yaml");
+  const auto out = fresh_dir("pressure-only");
+  CoupledGauges gauges(scene, out);
+  const std::vector<double> p = {1.0e5, 2.0e5, 3.0e5};
+  for (int n = 0; n <= 10; ++n)
+    if (gauges.due(0.3e-4 * n)) gauges.record_pressure(0.3e-4 * n, p);
+  EXPECT_EQ(gauges.sample_count(), 4u);
+  EXPECT_THROW(gauges.record_pressure(1.0, std::vector<double>{1.0}), Error);
+}
+
 TEST(CoupledGauges, Samples_follow_the_gauge_interval) {
   const auto scene = config::parse_scene(tube(", gauge_interval: 1.0e-4"), "tube.yaml");
   CoupledGauges gauges(scene, fresh_dir("interval"));
@@ -148,7 +175,7 @@ TEST(CoupledGauges, Samples_follow_the_gauge_interval) {
   // Steps of 0.3e-4 s: samples at 0, then at the first step end past 1e-4, 2e-4, ...
   for (int n = 0; n <= 10; ++n) {
     cosim::Message fdm, mpm;
-    gauges.add(n > 0, 0.3e-4 * n, true, fdm, mpm);
+    gauges.add(n > 0, 0.3e-4 * n, GaugeSamplers::owners, fdm, mpm);
     if (fdm.header.exchange().operations_size() > 0) ++sampled;
   }
   // t = 0, 1.2e-4, 2.1e-4, 3.0e-4 (3e-4 reached within round-off).
@@ -161,7 +188,7 @@ TEST(CoupledGauges, A_scene_without_gauges_writes_no_file_and_asks_nothing) {
   const auto out = fresh_dir("none");
   CoupledGauges gauges(scene, out);
   cosim::Message fdm, mpm;
-  gauges.add(false, 0.0, true, fdm, mpm);
+  gauges.add(false, 0.0, GaugeSamplers::owners, fdm, mpm);
   EXPECT_EQ(fdm.header.exchange().operations_size(), 0);
   EXPECT_EQ(mpm.header.exchange().operations_size(), 0);
   gauges.flush();

@@ -72,14 +72,14 @@ TEST(FdmServeErrors, NegativeDensityBreaksTheAdvanceAndIsReportedAsNumerical) {
   EXPECT_THAT(fdm.stop_reason(), HasSubstr("ERROR_CODE_NUMERICAL"));
 }
 
-TEST(FdmServeErrors, FieldExportIsRefusedAsUnsupportedAndTheSolverCarriesOn) {
+TEST(FdmServeErrors, FieldExportOfAnUndeclaredRegionIsRefusedAndTheSolverCarriesOn) {
   ServedFdm fdm;
   fdm.request(setup(sod_text(100), {}));
   cosim::Message field_export;
   field_export.header.mutable_field_export()->set_transfer_id("never");
-  EXPECT_THAT(
-      fdm.refusal(std::move(field_export)),
-      AllOf(HasSubstr("ERROR_CODE_UNEXPECTED"), HasSubstr("does not support 'field_export'")));
+  field_export.header.mutable_field_export()->add_fields("nowhere/rho");
+  EXPECT_THAT(fdm.refusal(std::move(field_export)),
+              AllOf(HasSubstr("ERROR_CODE_UNKNOWN_REGION"), HasSubstr("'nowhere'")));
   cosim::Message exchange;
   exchange.header.mutable_exchange()->add_operations()->mutable_propose_dt();
   EXPECT_GT(
@@ -130,7 +130,9 @@ TEST(FdmServeErrors, VersionMismatchFromTheCouplerStopsTheSolverWithTheCouplersR
   EXPECT_EQ(hello.software(), "mpfd fdm_solver");
   EXPECT_EQ(hello.min_major(), 1U);
   EXPECT_EQ(hello.max_major(), 1U);
-  EXPECT_THAT(hello.capabilities(), ::testing::Contains("cell_regions"));
+  for (const char* capability :
+       {"cell_regions", "field_chunks", "tracer_regions", "material_fields"})
+    EXPECT_THAT(hello.capabilities(), ::testing::Contains(capability));
   EXPECT_THAT(reason, AllOf(HasSubstr("ERROR_CODE_VERSION_MISMATCH"),
                             HasSubstr("the coupler speaks v7 only")));
 }

@@ -1,0 +1,26 @@
+#pragma once
+// Tracers for the FDM after the 1D spherical -> 3D handoff (design §3.5 H1s
+// step 4): the FDM needs material marks (T §3.2.2) besides the remapped
+// conserved fields. tracers_per_axis^d tracers per cell at the sub-cell
+// centres (where fdm_solver's seed_from_materials puts them), each of the
+// material of the shell holding its distance from the centre; outside the
+// profile (below r_0 or beyond r_N) the ambient material. The fraction of a
+// cell's tracers of material r approximates the remap's exact volume
+// fraction theta_r (spherical_to_cartesian.hpp) by the midpoint rule.
+// Geometry as the remap: 3D grids spherical about `centre`; 2D x-y grids
+// cylindrical about the z axis through it.
+
+#include "common/grid/uniform_grid.hpp"
+#include "coupler/handoff/particle_fields.hpp"
+#include "coupler/remap/radial_profile.hpp"
+
+namespace mpfd::coupler::remap {
+
+/// Throws mpfd::Error for a 1D grid, a 2D grid whose inactive axis is not z,
+/// an inconsistent profile, ambient_material < 0 or tracers_per_axis < 1.
+[[nodiscard]] handoff::TracerPoints radial_tracers(const grid::UniformGrid& grid,
+                                                   const grid::Vec3& centre,
+                                                   const RadialProfile& profile,
+                                                   int ambient_material, int tracers_per_axis);
+
+}  // namespace mpfd::coupler::remap

@@ -1,0 +1,32 @@
+#pragma once
+// The tracker state of an FDM zone whose cells and tracers arrive from
+// outside (an AFDMP handoff, T §3.2.1 -> §3.2.2: the MPM particles of the
+// fluid zone become massless tracers, T (3-3)-(3-8)). Only positions and
+// materials arrive, so the state is built as a fresh start would build it:
+// bin, classify by tracer counts (T (3-23) with equal carried volumes), give
+// tracer-free cells the nearest material (empty_cell_fill.hpp), assign the
+// carried volumes (T (3-21), (3-22)), and start every material of a cell from
+// the cell's own state, e_r = e_c and rho_r = rho_c (T is silent on the first
+// closure after a handoff; the closure then splits rho_c among the materials).
+
+#include <span>
+
+#include "common/grid/uniform_grid.hpp"
+#include "fdm_solver/tracer/multi_material_tracker.hpp"
+
+namespace mpfd::fdm {
+
+/// The tracker state of `points` (positions and materials; their volumes are
+/// ignored) on `grid` with `material_count` materials, cell density `density`
+/// [kg/m^3] and specific internal energy `energy` [J/kg] (grid order).
+/// `fallback_material` (one per cell) classifies the cells only when no tracer
+/// at all lies in the grid. Throws mpfd::Error naming the first tracer outside
+/// the grid or with a material outside [0, material_count), a cell holding
+/// three materials, or a size mismatch.
+[[nodiscard]] TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_count,
+                                               TracerSet points,
+                                               std::span<const int> fallback_material,
+                                               std::span<const double> density,
+                                               std::span<const double> energy);
+
+}  // namespace mpfd::fdm
