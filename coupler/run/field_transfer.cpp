@@ -1,5 +1,6 @@
 #include "coupler/run/field_transfer.hpp"
 
+#include <chrono>
 #include <vector>
 
 #include "common/core/error.hpp"
@@ -14,6 +15,10 @@ std::string transfer_text(std::string_view what, std::string_view peer,
   for (const auto& name : names) fields += (fields.empty() ? "" : ", ") + name;
   return std::string(what) + " of fields [" + fields + "] (transfer '" + std::string(transfer_id) +
          "') with solver '" + std::string(peer) + "'";
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::uint64_t frame_bytes(const cosim::Message& message) {
@@ -32,6 +37,7 @@ cosim::Message export_fields(cosim::Hub& hub, std::string_view peer, std::string
   body.set_transfer_id(std::string(transfer_id));
   for (const auto& name : names) body.add_fields(name);
   body.set_max_chunk_bytes(max_chunk_bytes);
+  const auto start = std::chrono::steady_clock::now();
   FieldTransferStats sent;
   cosim::FieldAssembly assembly{std::string(transfer_id)};
   try {
@@ -46,6 +52,7 @@ cosim::Message export_fields(cosim::Hub& hub, std::string_view peer, std::string
     if (stats != nullptr) {
       stats->chunks += sent.chunks;
       stats->bytes += sent.bytes;
+      stats->seconds += seconds_since(start);
     }
     return fields;
   } catch (const Error& error) {
@@ -59,6 +66,7 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
                                          std::uint64_t max_chunk_bytes, bool tracers,
                                          std::chrono::milliseconds timeout,
                                          FieldTransferStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
   try {
     std::vector<cosim::Message> chunks =
         cosim::slice_into_chunks(fields, transfer_id, names, max_chunk_bytes);
@@ -89,6 +97,7 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
     if (stats != nullptr) {
       stats->chunks += sent.chunks;
       stats->bytes += sent.bytes;
+      stats->seconds += seconds_since(start);
     }
     return done.header.field_import_done();
   } catch (const Error& error) {

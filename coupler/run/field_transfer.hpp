@@ -16,11 +16,12 @@
 
 namespace mpfd::coupler {
 
-/// What one transfer put on the wire, for summary.json: FieldChunk messages
-/// and the bytes of their array frames.
+/// What transfers put on the wire, for summary.json: FieldChunk messages, the
+/// bytes of their array frames, and the wall time from request to last reply.
 struct FieldTransferStats {
   std::uint32_t chunks = 0;
   std::uint64_t bytes = 0;
+  double seconds = 0.0;
 };
 
 /// Asks `peer` for the fields `names` ("<region>/<quantity>", README §15

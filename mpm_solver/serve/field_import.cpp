@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -121,22 +122,22 @@ cosim::v1::FieldChunkAck receive_field_chunk(ServedZone& zone, const cosim::Mess
 
 cosim::v1::FieldImportDone commit_field_import(ServedZone& zone, const cosim::Message& commit) {
   const auto& body = commit.header.field_import_commit();
+  // A commit ends the import whatever its outcome: a refused one is sent again whole.
+  std::optional<cosim::FieldAssembly> import = std::move(zone.field_import);
+  zone.field_import.reset();
   if (body.tracers())
     refuse(cosim::v1::ERROR_CODE_MALFORMED,
            "transfer '" + body.transfer_id() +
                "' has tracers set, but an MPM zone has no TRACERS regions");
-  if (!zone.field_import || zone.field_import->transfer_id() != body.transfer_id())
+  if (!import || import->transfer_id() != body.transfer_id())
     refuse(cosim::v1::ERROR_CODE_MALFORMED,
            "no import of transfer '" + body.transfer_id() + "' was received" +
-               (zone.field_import
-                    ? " (the chunks received are of '" + zone.field_import->transfer_id() + "')"
-                    : ""));
-  if (!zone.field_import->complete())
+               (import ? " (the chunks received are of '" + import->transfer_id() + "')" : ""));
+  if (!import->complete())
     refuse(cosim::v1::ERROR_CODE_MALFORMED,
            "transfer '" + body.transfer_id() + "' is incomplete after " +
-               std::to_string(zone.field_import->chunks()) + " chunks (no chunk with last = true)");
-  const cosim::Message fields = zone.field_import->take();
-  zone.field_import.reset();
+               std::to_string(import->chunks()) + " chunks (no chunk with last = true)");
+  const cosim::Message fields = import->take();
 
   ParticleBatch all;
   bool with_stress = false;

@@ -22,11 +22,12 @@ namespace mpfd::mpm {
 /// added in one MpmSolver::inject_particles. The clock becomes the commit's
 /// envelope sim_time (§15 rule 4). Returns FieldImportDone with the stable dt
 /// and the totals of the added particles as the solver holds them: mass,
-/// momentum x, y, z, internal + kinetic energy (rule 5). Throws a non-fatal
-/// cosim::ProtocolError, nothing changed: MALFORMED (no complete import of
-/// that transfer, tracers set, a missing or bad array, a particle outside its
-/// box or refused by the solver), UNKNOWN_REGION (a region or quantity not
-/// declared), UNEXPECTED (a NODES region: those are export only).
+/// momentum x, y, z, internal + kinetic energy (rule 5). Every commit ends the
+/// import: a refused one is a non-fatal cosim::ProtocolError with the zone
+/// unchanged, and the coupler sends the transfer again whole. MALFORMED: no
+/// complete import of that transfer, tracers set, a missing or bad array, a
+/// particle outside its box or refused by the solver; UNKNOWN_REGION: a
+/// region or quantity not declared; UNEXPECTED: a NODES region (export only).
 [[nodiscard]] cosim::v1::FieldImportDone commit_field_import(ServedZone& zone,
                                                              const cosim::Message& commit);
 

@@ -1,8 +1,8 @@
 // The coupler's whole-field transfers (coupler/run/field_transfer.hpp, proto
-// README §15) against the real `mpm_solver serve` on a thread: the chunk
-// budget changes the number of chunks, never the arrays; an import's
-// FieldImportDone totals are the coupler's own sums of what it sent; a
-// refusal names the solver and the field.
+// README §15) against the real `mpm_solver serve` and `fdm_solver serve` on a
+// thread: the chunk budget changes the number of chunks, never the arrays; an
+// import's FieldImportDone totals are the coupler's own sums of what it sent;
+// a refusal names the solver and the field.
 
 #include "coupler/run/field_transfer.hpp"
 
@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "tests/unit/fdm_solver/serve/serve_harness.hpp"
 #include "tests/unit/mpm_solver/serve/serve_harness.hpp"
 
 namespace mpfd::coupler {
@@ -146,6 +147,7 @@ TEST(FieldTransfer, ImportDoneTotalsEqualTheCouplersSumsOfWhatItSent) {
   const v1::FieldImportDone done =
       import_fields(served.hub(), "mpm", "h2", fields, names, 4096, false, kTimeout, &stats);
   EXPECT_EQ(stats.bytes, 132 * n);  // 140 bytes a particle without burn_fraction
+  EXPECT_GT(stats.seconds, 0.0);
   EXPECT_GT(stats.chunks, names.size());
   EXPECT_GT(done.stable_dt(), 0.0);
   ASSERT_EQ(done.totals_size(), 5);
@@ -158,6 +160,21 @@ TEST(FieldTransfer, ImportDoneTotalsEqualTheCouplersSumsOfWhatItSent) {
   const auto back = export_fields(served.hub(), "mpm", "check",
                                   std::vector<std::string>{"inflow/id"}, 0, kTimeout);
   EXPECT_EQ(cosim::find_descriptor(back, "inflow", "id").shape(0), n);
+
+  // The same batch again, one particle moved out of the inflow box: refused, nothing added.
+  const auto& x = cosim::find_descriptor(fields, "inflow", "position");
+  static_cast<double*>(fields.frames.at(x.frame_index()).data())[3 * 17] = 0.6;
+  try {
+    (void)import_fields(served.hub(), "mpm", "h2-again", fields, names, 4096, false, kTimeout);
+    ADD_FAILURE() << "a particle outside its region was imported";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), AllOf(HasSubstr("import"), HasSubstr("solver 'mpm'"),
+                                    HasSubstr("transfer 'h2-again'"), HasSubstr("particle 17"),
+                                    HasSubstr("outside the region's box")));
+  }
+  const auto after = export_fields(served.hub(), "mpm", "check-again",
+                                   std::vector<std::string>{"inflow/id"}, 0, kTimeout);
+  EXPECT_EQ(cosim::find_descriptor(after, "inflow", "id").shape(0), n);
 }
 
 TEST(FieldTransfer, ARefusalNamesTheSolverAndTheField) {
@@ -175,6 +192,52 @@ TEST(FieldTransfer, ARefusalNamesTheSolverAndTheField) {
   const auto fields = export_fields(served.hub(), "mpm", "good", names_of("fluid_particles", false),
                                     4096, kTimeout);
   EXPECT_GT(cosim::find_descriptor(fields, "fluid_particles", "mass").shape(0), 0U);
+}
+
+TEST(FieldTransfer, FdmCellsExportedAndImportedBackKeepTheStateAndTotals) {
+  fdm::testing::ServedFdm fdm;
+  constexpr int n = 64;  // Sod's tube, cells of 1/64 m^3
+  const auto all_cells =
+      fdm::testing::cell_box("all_cells", {0, 0, 0}, {n, 1, 1}, {"rho", "momentum", "E"});
+  double dt = fdm.request(fdm::testing::setup(fdm::testing::sod_text(n), {all_cells}))
+                  .header.setup_ack()
+                  .stable_dt();
+  double time = 0.0;
+  for (int step = 0; step < 20; ++step) {
+    cosim::Message exchange;
+    fdm::testing::add_advance(exchange, dt, time);
+    exchange.header.mutable_exchange()->add_operations()->mutable_propose_dt();
+    const auto reply = fdm.request(std::move(exchange));
+    time = reply.header.exchange_result().results(0).advanced().time();
+    dt = reply.header.exchange_result().results(1).proposed().stable_dt();
+  }
+  const std::vector<std::string> names = {"all_cells/rho", "all_cells/momentum", "all_cells/E"};
+  FieldTransferStats small, large;
+  const auto a = export_fields(fdm.hub(), "fdm", "cells-small", names, 100, kTimeout, &small);
+  const auto b = export_fields(fdm.hub(), "fdm", "cells-large", names, 64 << 20, kTimeout, &large);
+  for (const auto& name : names) EXPECT_TRUE(same_bytes(a, b, name)) << name;
+  EXPECT_EQ(large.chunks, 3U);
+  EXPECT_EQ(small.chunks, 6 + 16 + 6);  // 12 rows of 8 bytes, 4 rows of 24, 12 rows of 8
+  EXPECT_EQ(small.bytes, 40U * n);
+
+  std::array<double, 5> sums{};  // mass, momentum, E of the cells, V = 1/64 m^3
+  const double volume = 1.0 / n;
+  const auto rho = cosim::view_array<double>(a, "all_cells", "rho").values();
+  const auto momentum = cosim::view_array<double>(a, "all_cells", "momentum").values();
+  const auto energy = cosim::view_array<double>(a, "all_cells", "E").values();
+  for (int c = 0; c < n; ++c) {
+    sums[0] += rho[c] * volume;
+    for (int k = 0; k < 3; ++k) sums[1 + k] += momentum[3 * c + k] * volume;
+    sums[4] += energy[c] * volume;
+  }
+  fdm.hub().set_clock(20, time);
+  const auto done = import_fields(fdm.hub(), "fdm", "cells-back", a, names, 256, false, kTimeout);
+  ASSERT_EQ(done.totals_size(), 5);
+  EXPECT_NEAR(done.totals(0), sums[0], 1e-14 * sums[0]);
+  EXPECT_NEAR(done.totals(1), sums[1], 1e-14 * std::sqrt(2.0 * sums[0] * sums[4]));
+  EXPECT_NEAR(done.totals(4), sums[4], 1e-14 * sums[4]);
+  const auto c = export_fields(fdm.hub(), "fdm", "cells-again", names, 0, kTimeout);
+  for (const auto& name : names) EXPECT_TRUE(same_bytes(a, c, name)) << name;  // SET, bitwise
 }
 
 }  // namespace

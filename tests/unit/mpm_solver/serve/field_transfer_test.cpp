@@ -270,6 +270,48 @@ TEST(MpmServeFieldTransfer, AParticleOutsideItsRegionIsMalformedAndNothingChange
   EXPECT_EQ(count(), before);
 }
 
+TEST(MpmServeFieldTransfer, AChunkOfANewTransferDiscardsTheUnfinishedOne) {
+  ServedMpm served;
+  served.request(setup(blast_text(), transfer_regions()));
+  auto first =
+      cosim::slice_into_chunks(particle_batch("inflow", 5), "a", field_names("inflow"), 64);
+  served.request(std::move(first.front()));  // transfer 'a' stops after one chunk
+  import_fields(served, particle_batch("inflow", 5), "b", 64);
+  cosim::Message commit;
+  commit.header.mutable_field_import_commit()->set_transfer_id("a");
+  EXPECT_THAT(served.refusal(std::move(commit)), HasSubstr("no import of transfer 'a'"));
+  EXPECT_EQ(export_region(served, "inflow").header.exchange_result().results(0).exported().count(),
+            5U);
+}
+
+TEST(MpmServeFieldTransfer, ImportsIntoNodesOrWithTracersOrOfUndeclaredQuantitiesAreRefused) {
+  ServedMpm served;
+  served.request(setup(blast_text(), transfer_regions()));
+  const auto refusal_of = [&](const cosim::Message& fields, const std::vector<std::string>& names,
+                              bool tracers) {
+    for (auto& chunk : cosim::slice_into_chunks(fields, "t", names, 1 << 20))
+      served.request(std::move(chunk));
+    cosim::Message commit;
+    commit.header.mutable_field_import_commit()->set_transfer_id("t");
+    commit.header.mutable_field_import_commit()->set_tracers(tracers);
+    return served.refusal(std::move(commit));
+  };
+  EXPECT_THAT(refusal_of(particle_batch("inflow", 2), field_names("inflow"), true),
+              HasSubstr("no TRACERS regions"));
+  cosim::Message nodes;
+  cosim::add_array(nodes, {"ghost_nodes", "mass", {}, "kg"}, std::vector<double>(51, 1.0));
+  EXPECT_THAT(refusal_of(nodes, {"ghost_nodes/mass"}, false),
+              AllOf(HasSubstr("UNEXPECTED"), HasSubstr("NODES regions export only")));
+  cosim::Message fluid = particle_batch("fluid", 2);  // "fluid" declares only id
+  EXPECT_THAT(refusal_of(fluid, field_names("fluid"), false),
+              AllOf(HasSubstr("UNKNOWN_REGION"), HasSubstr("'fluid/position'")));
+  cosim::Message partial = particle_batch("inflow", 2);
+  EXPECT_THAT(refusal_of(partial, {"inflow/id", "inflow/mass"}, false),
+              HasSubstr("array 'position' is missing"));
+  EXPECT_EQ(export_region(served, "all").header.exchange_result().results(0).exported().count(),
+            512U);  // the scene's particles, nothing added
+}
+
 TEST(MpmServeFieldTransfer, CommitSetsTheClockToItsSimTime) {
   ServedMpm served;
   served.request(setup(blast_text(), transfer_regions()));
