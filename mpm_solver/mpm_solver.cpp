@@ -64,7 +64,7 @@ constexpr double kFixedMassFactor = 1e12;
 }  // namespace
 
 MpmSettings MpmSettings::from_scene(const config::Scene& scene) {
-  return {.cfl = scene.time.cfl,
+  return {.cfl = scene.time.mpm_cfl(),
           .shape_function = scene.solver.mpm.shape_function,
           .update = scene.solver.mpm.update,
           .bulk_viscosity_quadratic = scene.solver.mpm.bulk_viscosity_quadratic,

@@ -49,7 +49,7 @@
 namespace mpfd::mpm {
 
 struct MpmSettings {
-  double cfl = 0.5;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
+  double cfl = config::kMpmDefaultCfl;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
   config::ShapeFunction shape_function = config::ShapeFunction::linear;
   config::MpmUpdate update = config::MpmUpdate::musl;
   double bulk_viscosity_quadratic = 1.5;  ///< c0
