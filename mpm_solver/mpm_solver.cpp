@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <span>
 #include <string>
@@ -63,7 +64,7 @@ constexpr double kFixedMassFactor = 1e12;
 }  // namespace
 
 MpmSettings MpmSettings::from_scene(const config::Scene& scene) {
-  return {.cfl = scene.time.cfl,
+  return {.cfl = scene.time.mpm_cfl(),
           .shape_function = scene.solver.mpm.shape_function,
           .update = scene.solver.mpm.update,
           .bulk_viscosity_quadratic = scene.solver.mpm.bulk_viscosity_quadratic,
@@ -95,6 +96,8 @@ MpmSolver::MpmSolver(const config::Scene& scene, MpmSettings settings)
   bodies_ = std::move(generated.bodies);
   scene_bodies_ = bodies_.size();
   materials_ = scene.materials;
+  for (const auto& m : materials_)
+    gas_.push_back(std::holds_alternative<eos::IdealGas>(m.eos) ? 1 : 0);
   for (std::size_t p = 0; p < particles_.size(); ++p) particles_.id[p] = kSceneParticleIdBase + p;
 
   models_.resize(scene.materials.size());
@@ -796,6 +799,7 @@ void MpmSolver::update_particles(double dt) {
   const bool active[3] = {g.is_active(0), g.is_active(1), g.is_active(2)};
   const double t1 = time_ + dt;
   std::size_t collapsed = 0;
+  leaving_.assign(ps.size(), 0);  // scratch here: marks collapsed particles
   dispatch_kernel(
       settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
       [&](auto width, auto mask, auto with_contact) {
@@ -841,7 +845,10 @@ void MpmSolver::update_particles(double dt) {
           step.strain_increment = 0.5 * (l + l.transpose()) * dt;  // (2-18)
           const Tensor3 spin = 0.5 * (l - l.transpose()) * dt;     // (2-19)
           const double volumetric = step.strain_increment.trace();
-          if (!(1.0 + volumetric > 0.0)) return 1;
+          if (!(1.0 + volumetric > 0.0)) {
+            leaving_[p] = 1;
+            return 1;
+          }
           for (int i = 0; i < 3; ++i)  // F_ii, the cpGIMP domain stretch
             ps.stretch[i][p] *= 1.0 + step.strain_increment(i, i);
           step.dt = dt;
@@ -861,10 +868,19 @@ void MpmSolver::update_particles(double dt) {
           return 0;
         });
       });
-  if (collapsed > 0)
-    throw Error("mpm: " + std::to_string(collapsed) +
-                " particle(s) collapsed (1 + tr(d eps) <= 0) at t = " + std::to_string(t1) +
-                " s; lower time.cfl");
+  if (collapsed > 0) {
+    const auto p = static_cast<std::size_t>(
+        std::find(leaving_.begin(), leaving_.end(), std::uint8_t{1}) - leaving_.begin());
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "mpm: %zu particle(s) collapsed (1 + tr(d eps) <= 0) in the step to t = %.6g s "
+                  "(step %lld), the first particle %zu (body '%s') at (%.6g, %.6g, %.6g) m, "
+                  "density %.6g kg/m^3 and pressure %.6g Pa at the step's start; lower time.cfl",
+                  collapsed, t1, static_cast<long long>(steps_ + 1), p,
+                  bodies_[ps.body[p]].name.c_str(), ps.position[0][p], ps.position[1][p],
+                  ps.position[2][p], ps.density[p], ps.pressure[p]);
+    throw Error(text);
+  }
 }
 
 void MpmSolver::remove_outflow() {
@@ -903,19 +919,55 @@ void MpmSolver::remove_outflow() {
   ledger_.particles_removed += static_cast<std::int64_t>(ps.remove_flagged(leaving_));
 }
 
+bool MpmSolver::physical(std::size_t p) const {
+  const auto& ps = particles_;
+  const double v2 = ps.velocity[0][p] * ps.velocity[0][p] + ps.velocity[1][p] * ps.velocity[1][p] +
+                    ps.velocity[2][p] * ps.velocity[2][p];
+  const bool finite =
+      std::isfinite(v2 + ps.sound_speed[p] + ps.pressure[p] + ps.specific_internal_energy[p] +
+                    ps.position[0][p] + ps.position[1][p] + ps.position[2][p]);
+  // An ideal gas cannot hold tension: p < 0 means e < 0, T (2-59).
+  return finite && ps.density[p] > 0.0 && !(gas_[ps.material[p]] != 0 && ps.pressure[p] < 0.0);
+}
+
 void MpmSolver::compute_stable_dt() {
   const auto& ps = particles_;
   double fastest = 0.0;
+  std::size_t unphysical = 0;
   const auto count = static_cast<std::ptrdiff_t>(ps.size());
-#pragma omp parallel for schedule(static) reduction(max : fastest) if (count >= kMinParallelCount)
+#pragma omp parallel for schedule(static) reduction(max : fastest) reduction(+ : unphysical) \
+    if (count >= kMinParallelCount)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     const auto p = static_cast<std::size_t>(i);
     const double v2 = ps.velocity[0][p] * ps.velocity[0][p] +
                       ps.velocity[1][p] * ps.velocity[1][p] + ps.velocity[2][p] * ps.velocity[2][p];
     fastest = std::max(fastest, ps.sound_speed[p] + std::sqrt(v2));
+    unphysical += physical(p) ? 0 : 1;
   }
+  // std::max drops a NaN speed: without this check a broken particle would
+  // neither limit the step nor stop the run.
+  if (unphysical > 0) throw_unphysical(unphysical);
   stable_dt_ = fastest > 0.0 ? settings_.cfl * min_spacing_ / fastest
                              : std::numeric_limits<double>::infinity();
+}
+
+void MpmSolver::throw_unphysical(std::size_t count) const {
+  const auto& ps = particles_;
+  std::size_t p = 0;
+  while (p + 1 < ps.size() && physical(p)) ++p;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "mpm: unphysical state of particle %zu (id %llu, body '%s', material '%s') at "
+                "(%.6g, %.6g, %.6g) m, t = %.6g s (step %lld): density %.6g kg/m^3, pressure "
+                "%.6g Pa, specific internal energy %.6g J/kg, velocity (%.6g, %.6g, %.6g) m/s "
+                "(%zu particle(s) so); density and energy must stay positive and finite. Reduce "
+                "time.cfl or refine the grid.",
+                p, static_cast<unsigned long long>(ps.id[p]), bodies_[ps.body[p]].name.c_str(),
+                materials_[ps.material[p]].name.c_str(), ps.position[0][p], ps.position[1][p],
+                ps.position[2][p], time_, static_cast<long long>(steps_), ps.density[p],
+                ps.pressure[p], ps.specific_internal_energy[p], ps.velocity[0][p],
+                ps.velocity[1][p], ps.velocity[2][p], count);
+  throw Error(text);
 }
 
 MpmTotals MpmSolver::totals() const {

@@ -49,7 +49,7 @@
 namespace mpfd::mpm {
 
 struct MpmSettings {
-  double cfl = 0.5;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
+  double cfl = config::kMpmDefaultCfl;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
   config::ShapeFunction shape_function = config::ShapeFunction::linear;
   config::MpmUpdate update = config::MpmUpdate::musl;
   double bulk_viscosity_quadratic = 1.5;  ///< c0
@@ -201,7 +201,13 @@ class MpmSolver {
   void update_and_remap_velocities(double dt);
   void update_particles(double dt);
   void remove_outflow();
+  /// The step limit from every particle; throws (throw_unphysical) if one is unphysical.
   void compute_stable_dt();
+  /// Particle p's state is finite, its density positive and, in an ideal gas, its pressure not
+  /// negative.
+  [[nodiscard]] bool physical(std::size_t p) const;
+  /// Throws mpfd::Error naming the first of the `count` unphysical particles and its state.
+  [[noreturn]] void throw_unphysical(std::size_t count) const;
   /// The model of `material`, made (and the history stride widened) on first use.
   ConstitutiveModel& model_for(std::size_t material);
   /// The body injected particles of `material` join, made on first use.
@@ -223,6 +229,7 @@ class MpmSolver {
   std::vector<BodyInfo> bodies_;
   std::vector<std::unique_ptr<ConstitutiveModel>> models_;  // by material index; null if unused
   std::vector<config::Material> materials_;                 // the scene's, for models made later
+  std::vector<std::uint8_t> gas_;  // per material: 1 for an ideal gas (no tension)
   std::size_t scene_bodies_ = 0;
   std::vector<NodeLoad> node_loads_;  // for the next advance
   /// Mass and momentum a coupler added to nodes this step (node slot, dm, dp): a

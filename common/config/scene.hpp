@@ -17,10 +17,21 @@
 
 namespace mpfd::config {
 
+/// The Courant numbers a solver uses when the scene gives none: at least 20 %
+/// below the smallest stable CFL the stability suite found for it
+/// (docs/stability.md: FDM 1.0, MPM with linear shape functions 0.35).
+inline constexpr double kFdmDefaultCfl = 0.5;
+inline constexpr double kMpmDefaultCfl = 0.25;
+
 struct TimeControl {
-  double end = 0.0;         ///< end time [s]
-  double cfl = 0.5;         ///< Courant number of both solvers [-], in (0, 1]
-  int max_steps = 1000000;  ///< the run stops with an error after this many steps
+  double end = 0.0;           ///< end time [s]
+  std::optional<double> cfl;  ///< Courant number of both solvers [-], in (0, 1]; absent: defaults
+  int max_steps = 1000000;    ///< the run stops with an error after this many steps
+
+  /// The Courant number of the FDM solver: cfl, or kFdmDefaultCfl.
+  [[nodiscard]] double fdm_cfl() const { return cfl.value_or(kFdmDefaultCfl); }
+  /// The Courant number of the MPM solver: cfl, or kMpmDefaultCfl.
+  [[nodiscard]] double mpm_cfl() const { return cfl.value_or(kMpmDefaultCfl); }
 };
 
 /// spherical: one-dimensional, x is the radius from the origin (seed S; mpm_solver run).

@@ -18,7 +18,8 @@ std::shared_ptr<const Table<TimeControl>> time_table() {
   auto t = table<TimeControl>("time", "When the run ends and how big its steps may be.");
   t->required("end", &TimeControl::end, Number("s", Range::above(0)), "end time")
       .optional("cfl", &TimeControl::cfl, Number("-", Range::open_closed(0, 1)),
-                "Courant number of both solvers")
+                "Courant number of both solvers; absent: 0.5 for the FDM, 0.25 for the MPM "
+                "(docs/stability.md)")
       .optional("max_steps", &TimeControl::max_steps, Integer(Range::at_least(1)),
                 "the run stops with an error after this many steps");
   return t;

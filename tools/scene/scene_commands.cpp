@@ -51,7 +51,8 @@ std::vector<io::FieldView> field_views(const initial::CellFields& f) {
 void describe_scene(const config::Scene& scene, std::ostream& out) {
   const grid::UniformGrid grid = initial::scene_grid(scene);
   out << "scene '" << scene.name << "': " << grid.dimension() << "D, end time "
-      << sci(scene.time.end) << " s, CFL " << scene.time.cfl << "\n";
+      << sci(scene.time.end) << " s, CFL " << scene.time.fdm_cfl() << " (FDM), "
+      << scene.time.mpm_cfl() << " (MPM)\n";
   out << "  grid: " << grid.cells()[0] << " x " << grid.cells()[1] << " x " << grid.cells()[2]
       << " cells of " << vec(grid.spacing()) << " m from " << vec(grid.origin()) << " to "
       << vec(grid.upper()) << " m\n";

@@ -44,7 +44,7 @@ TEST(FdmServeFieldTransfer, ExportImportRoundTripOverIpcThenAStepBitwiseAsTheSol
 
   // The same state directly: rho in box C order (j fastest) from grid order.
   const auto parsed = config::parse_scene(scene, "corner.yaml");
-  EulerSolver direct(parsed, {.cfl = parsed.time.cfl,
+  EulerSolver direct(parsed, {.cfl = parsed.time.fdm_cfl(),
                               .viscosity = parsed.solver.fdm.artificial_viscosity,
                               .tracers_per_axis = parsed.solver.fdm.tracers_per_axis});
   const auto rho = array_of(fields, "all_cells", "rho");

@@ -69,7 +69,7 @@ double front_radius(const EulerState& s, std::array<double, 3> direction, double
 void check_sedov(int cells) {
   auto scene = config::load_scene(MPFD_SOURCE_DIR "/configs/sedov3d.yaml");
   scene.domain.cells = {cells, cells, cells};
-  EulerSolver solver(scene, {.cfl = scene.time.cfl, .viscosity = 1.0});
+  EulerSolver solver(scene, {.cfl = scene.time.fdm_cfl(), .viscosity = 1.0});
   const double ambient_energy = kAmbientPressure / 0.4 * 1.0;  // J in the 1 m^3 octant
   const double blast_energy = 8.0 * (solver.totals()[kEnergy] - ambient_energy);
   const double end = scene.time.end;

@@ -42,7 +42,9 @@ TEST(SceneLoader, Thesis_air_round_trips_exactly) {
 
 TEST(SceneLoader, Defaults_fill_what_the_scene_leaves_out) {
   const Scene s = parse_scene(kMinimalScene, "air.yaml");
-  EXPECT_EQ(s.time.cfl, 0.5);
+  EXPECT_FALSE(s.time.cfl.has_value());
+  EXPECT_EQ(s.time.fdm_cfl(), 0.5);
+  EXPECT_EQ(s.time.mpm_cfl(), 0.25);
   EXPECT_EQ(s.time.max_steps, 1000000);
   EXPECT_FALSE(s.zones.has_value());
   EXPECT_TRUE(std::holds_alternative<NoStrength>(s.materials[0].strength));

@@ -13,7 +13,7 @@ namespace {
 using namespace testing;
 
 SolverOptions options_of(const config::Scene& scene) {
-  return {.cfl = scene.time.cfl,
+  return {.cfl = scene.time.fdm_cfl(),
           .viscosity = scene.solver.fdm.artificial_viscosity,
           .tracers_per_axis = scene.solver.fdm.tracers_per_axis};
 }

@@ -38,7 +38,7 @@ TEST(FdmServeFluxes, CrossedAmountsAreTheSolversAndBalanceTheCellsBelowWithTheOu
              cell_box("below", {0}, {kFace}, {"rho", "E", "outflow_mass", "outflow_energy"})}));
   EXPECT_EQ(ack.header.setup_ack().regions(0).quantities_size(), 3);  // crossed_*
   const auto scene = config::parse_scene(sod_text(100), "sod.yaml");
-  EulerSolver direct(scene, {.cfl = scene.time.cfl});
+  EulerSolver direct(scene, {.cfl = scene.time.fdm_cfl()});
   direct.watch_face(0, kFace);
   const auto sum = [](const std::vector<double>& v) {
     return std::accumulate(v.begin(), v.end(), 0.0);
