@@ -364,20 +364,22 @@ double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
   }
   if (bad) {
     const auto& [cell, value] = *bad;
-    // Density > 0 with p < 0 is tension, not an overshoot a smaller step avoids: a water/air
-    // interface at rest stops at step 0 at CFL 0.1 as at 0.5 (docs/stability-runs.md).
-    const bool tension = value.density > 0.0 && value.pressure < 0.0;
+    // Density > 0 with p <= 0 is a condensed material at or below its reference state, not an
+    // overshoot a smaller step avoids: water or steel beside air stops at step 0 at CFL 0.1 as
+    // at 0.5, a steel body at e = 0 has p = 0 from the start (docs/stability-runs.md).
+    const bool condensed = value.density > 0.0 && value.pressure <= 0.0;
     throw Error("fdm_solver: unphysical state in cell (" + std::to_string(cell[0]) + ", " +
                 std::to_string(cell[1]) + ", " + std::to_string(cell[2]) + ") at " +
                 position_text(g.cell_center(cell)) + ", t = " + std::to_string(time_) +
                 " s (step " + std::to_string(steps_) + "): density " +
                 std::to_string(value.density) + " kg/m^3, pressure " +
                 std::to_string(value.pressure) + " Pa; both must stay positive. " +
-                (tension ? std::string("Negative pressure is tension, which the FDM cannot hold "
-                                       "(no cavitation model); next to a much lighter material "
-                                       "(e.g. water against air) the two-material contact "
-                                       "produces it, so keep such a body out of the FDM zone.")
-                         : std::string("Reduce time.cfl or refine the grid.")));
+                (condensed ? std::string("A pressure <= 0 is tension or a solid or liquid at its "
+                                         "reference state (e = 0), which the FDM cannot hold (no "
+                                         "strength or cavitation model); a water or solid body "
+                                         "beside a gas reaches it in the first steps: keep such "
+                                         "bodies out of the FDM's grid (time.cfl does not help).")
+                           : std::string("Reduce time.cfl or refine the grid.")));
   }
   for (int k = 0; k < sweeps; ++k) {
     for (std::size_t v = 0; v < kVariables; ++v) outflow_[v] += leaving[k][v];
