@@ -16,7 +16,6 @@ Outcomes:
 import csv
 import glob
 import json
-import math
 import os
 import signal
 import subprocess
@@ -110,7 +109,7 @@ def run_case(program, scene, out, timeout, max_pressure, max_speed, extra_args=(
         args += ["--threads", "1"]
     start = time.monotonic()
     with open(os.path.join(out, "stderr.log"), "w") as err:
-        proc = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=err,
+        proc = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=err, env=env,
                                 start_new_session=True)
         try:
             rc = proc.wait(timeout=timeout)
@@ -179,7 +178,3 @@ def write_csv(path, rows):
         writer.writeheader()
         for row in rows:
             writer.writerow(row)
-
-
-def finite_or_blank(value):
-    return value if isinstance(value, (int, float)) and math.isfinite(value) else ""
