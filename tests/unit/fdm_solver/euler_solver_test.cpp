@@ -13,6 +13,7 @@ namespace {
 
 using testing::gas_scene;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::sod_tube;
 
 void run_steps(EulerSolver& solver, int steps) {
@@ -210,6 +211,55 @@ TEST(EulerSolver, WaterInTensionStopsWithTheCellTimeAndValues) {
     EXPECT_THAT(e.what(), HasSubstr("unphysical state in cell ("));
     EXPECT_THAT(e.what(), HasSubstr(", t = "));
     EXPECT_THAT(e.what(), HasSubstr("pressure -"));
+    EXPECT_THAT(e.what(), HasSubstr("tension"));
+  }
+}
+
+TEST(EulerSolver, WaterNextToAirAtRestStopsNamingTensionNotTheTimeStep) {
+  // Found by bench/stability/random_scenes.py: a water body at ambient pressure
+  // beside air stops in its first step whatever the CFL; the message must not
+  // send the user to time.cfl.
+  const std::string text =
+      "name: water_air\ntime: {end: 1.0e-4, cfl: 0.1}\ndomain: {lower: [0, 0, 0], "
+      "upper: [1, 0.01, 0.01], cells: [100, 1, 1]}\n"
+      "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+      "  water: {eos: {type: polynomial, rho0: 1000, A1: 2.2e9, A2: 9.54e9, A3: 1.457e10, "
+      "B0: 0.28, B1: 0.28, T1: 2.2e9}}\n"
+      "initial: {material: air, density: 1.225, specific_internal_energy: 2.0685e5}\n"
+      "bodies:\n  - {name: water, material: water, density: 1000, pressure: 101356.5,\n"
+      "     shape: {box: {lower: [0.5, 0, 0], upper: [0.8, 0.01, 0.01]}}}\n"
+      "output: {interval: 1.0e-4}\n";
+  EulerSolver solver(config::parse_scene(text, "water_air.yaml"), {});
+  try {
+    run_steps(solver, 5);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("pressure -"));
+    EXPECT_THAT(e.what(), HasSubstr("tension"));
+    EXPECT_THAT(e.what(), Not(HasSubstr("Reduce time.cfl")));
+  }
+}
+
+TEST(EulerSolver, SolidBodyAtZeroEnergyStopsNamingItsReferenceState) {
+  // A steel body at e = 0 has p = 0: the FDM cannot hold it (in cfdmp it holds
+  // the MPM zone's bodies too); the message must say why, not blame the step.
+  const std::string text =
+      "name: steel_air\ntime: {end: 1.0e-5}\ndomain: {lower: [0, 0, 0], "
+      "upper: [1, 0.01, 0.01], cells: [100, 1, 1]}\n"
+      "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+      "  steel: {eos: {type: mie_gruneisen, rho0: 7830, C0: 4569, S: 1.49, gamma0: 2.17}}\n"
+      "initial: {material: air, density: 1.225, specific_internal_energy: 2.0685e5}\n"
+      "bodies:\n  - {name: plate, material: steel, density: 7830, specific_internal_energy: 0,\n"
+      "     shape: {box: {lower: [0.5, 0, 0], upper: [0.8, 0.01, 0.01]}}}\n"
+      "output: {interval: 1.0e-5}\n";
+  EulerSolver solver(config::parse_scene(text, "steel_air.yaml"), {});
+  try {
+    run_steps(solver, 5);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("density 7830"));
+    EXPECT_THAT(e.what(), HasSubstr("reference state"));
+    EXPECT_THAT(e.what(), Not(HasSubstr("Reduce time.cfl")));
   }
 }
 

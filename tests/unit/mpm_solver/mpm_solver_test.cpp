@@ -4,7 +4,9 @@
 #include <omp.h>
 
 #include <cmath>
+#include <string>
 
+#include "common/core/error.hpp"
 #include "tests/unit/mpm_solver/mpm_test_scenes.hpp"
 
 namespace mpfd::mpm {
@@ -148,6 +150,38 @@ TEST(MpmSolver, ResultIsBitwiseIndependentOfThreadCount) {
   omp_set_num_threads(omp_get_num_procs());
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t p = 0; p < one.size(); ++p) ASSERT_EQ(one[p], two[p]) << p;
+}
+
+// Found by bench/stability/extreme_runs.py: with USL, detonation products at
+// 8.4 GPa collapse a particle of the thin air (1e-3 kg/m^3) next to them in the
+// third step, at t ~ 1e-7 s, which the message printed as "t = 0.000000 s".
+TEST(MpmSolver, CollapsedParticleErrorNamesTimeStepAndParticle) {
+  const auto scene = config::parse_scene(
+      "name: thin_air\ntime: {end: 1.0e-5}\n"
+      "domain: {lower: [0, 0, 0], upper: [0.2, 0.002, 0.002], cells: [100, 1, 1]}\n"
+      "materials:\n  air: {eos: {type: ideal_gas, gamma: 1.4}}\n"
+      "  tnt: {eos: {type: jwl, rho0: 1630, A: 3.712e11, B: 3.21e9, R1: 4.15, R2: 0.95, "
+      "omega: 0.3, E0: 6.993e9}}\n"
+      "initial: {material: air, density: 1.225, specific_internal_energy: 2.0685e5}\n"
+      "bodies:\n"
+      "  - {name: air, material: air, density: 1.0e-3, specific_internal_energy: 2.0685e5,\n"
+      "     shape: {box: {lower: [0, 0, 0], upper: [0.2, 0.002, 0.002]}}}\n"
+      "  - {name: products, material: tnt, density: 1630, specific_internal_energy: 4.2902e6,\n"
+      "     shape: {box: {lower: [0, 0, 0], upper: [0.02, 0.002, 0.002]}}}\n"
+      "boundaries: {x_lower: wall, x_upper: outflow}\n"
+      "output: {interval: 1.0e-5}\n",
+      "thin_air.yaml");
+  MpmSolver solver(scene, settings(ShapeFunction::linear, MpmUpdate::usl));
+  try {
+    solver.advance_to(1.0e-5);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("particle(s) collapsed"), std::string::npos) << what;
+    EXPECT_EQ(what.find("t = 0.000000 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("e-07 s (step "), std::string::npos) << what;
+    EXPECT_NE(what.find("the first particle "), std::string::npos) << what;
+  }
 }
 
 }  // namespace
