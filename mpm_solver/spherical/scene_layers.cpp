@@ -167,7 +167,7 @@ SphericalOptions options_from_scene(const config::Scene& scene) {
   if (d.geometry == config::Geometry::spherical) {
     o.grid_spacing = (d.upper[0] - d.lower[0]) / d.cells[0];
     o.particles_per_cell = particles_per_cell(scene);
-    o.cfl = scene.time.cfl;
+    o.cfl = scene.time.mpm_cfl();
     o.shape = radial_shape(scene, scene.solver.mpm.shape_function, "solver.mpm.shape_function");
     const config::BoundaryKind outer = scene.boundaries[config::Face::x_upper];
     if (outer == config::BoundaryKind::non_reflecting)

@@ -28,7 +28,7 @@ namespace mpfd::mpm::spherical {
 [[nodiscard]] std::vector<RadialLayer> layers_from_scene(const config::Scene& scene);
 
 /// geometry spherical: h = the domain's cell size, particles per cell = the
-/// regions' particles_per_axis, cfl = time.cfl, shape and bulk viscosity of
+/// regions' particles_per_axis, cfl = time.mpm_cfl(), shape and bulk viscosity of
 /// solver.mpm, x_upper non_reflecting -> transmitting, outflow -> free.
 /// Otherwise (the AFDMP 1D start): solver.afdmp.spherical's options, the bulk
 /// viscosity of solver.mpm and a transmitting outer surface.
