@@ -7,6 +7,7 @@ OUT_DIR/v4_work_precision.csv  per run: case, cells, h, wall time, mean and max
                                the largest drop of p ahead of the shock at Z >= 1
 OUT_DIR/v4_peak_errors.csv     per run and gauge with Z >= 0.5: peak and arrival errors
 OUT_DIR/v4_work_precision.png  mean |peak error| (Z >= 1) against wall time
+OUT_DIR/v4_peak_table.md       peak error [%] per gauge (rows, by Z) and run (columns)
 Prints, for each pair of cases (a, b) and each run of b, the wall time a needs
 for b's error (log-log interpolation between a's runs) or, outside a's range, a's
 cheapest run that is at least as accurate: the factor is then a lower bound.
@@ -62,6 +63,21 @@ def write_csv(path, rows):
                              for k, v in row.items()})
 
 
+def write_peak_table(path, per_gauge):
+    runs = sorted({(r["case"], r["cells"]) for r in per_gauge})
+    z_of = {}
+    for r in per_gauge:  # Z of the first run that has the gauge (13.04 or 13.05 g)
+        z_of.setdefault(r["gauge"], float(r["Z"]))
+    gauges = sorted((z, g) for g, z in z_of.items())
+    error = {(r["case"], r["cells"], r["gauge"]): float(r["peak_error"]) for r in per_gauge}
+    with open(path, "w") as f:
+        f.write("| gauge | Z | " + " | ".join(f"{c} {n}^3" for c, n in runs) + " |\n")
+        f.write("|---" * (len(runs) + 2) + "|\n")
+        for z, g in gauges:
+            cells = [f"{100 * error[(c, n, g)]:+.1f}" if (c, n, g) in error else "" for c, n in runs]
+            f.write(f"| {g} | {z:.2f} | " + " | ".join(cells) + " |\n")
+
+
 def wall_at_error(points, error):
     """Wall time at `error` by log-log interpolation of (error, wall) points; None outside."""
     points = sorted(points)
@@ -76,6 +92,7 @@ def main(out):
     table, per_gauge = summarise(out)
     write_csv(os.path.join(out, "v4_work_precision.csv"), table)
     write_csv(os.path.join(out, "v4_peak_errors.csv"), per_gauge)
+    write_peak_table(os.path.join(out, "v4_peak_table.md"), per_gauge)
     cases = sorted({r["case"] for r in table})
     curves = {c: [(r["far_mean_abs_peak_error"], r["wall_s"]) for r in table if r["case"] == c]
               for c in cases}
