@@ -1,8 +1,12 @@
 #!/usr/bin/python3
 """V4 gauge readings of one `coupler run` against Kingery-Bulmash.
 
-v4_analyze.py RUN_DIR SCENE.yaml [CHARGE_MASS_KG]   (default 0.01304 kg, the
-thesis's 20 mm cube; the equal-mass sphere holds 13.05 g.)
+v4_analyze.py RUN_DIR SCENE.yaml [CHARGE_MASS_KG | auto]   (default 0.01304 kg,
+the thesis's 20 mm cube; the equal-mass sphere holds 13.05 g). auto: the TNT
+mass the run actually holds (charge_mass_of_run): the 3D MPM start fills the
+charge with particles on the grid, so a sphere or a cube whose side is no
+multiple of h holds another mass (the sphere 11.41 / 12.23 / 13.53 g on 25^3 /
+50^3 / 80^3, the cube 10.75 g on 80^3).
 
 Per gauge: R = |position| (the charge sits at the origin of the octant), Z =
 R / W^(1/3); peak overpressure = max(p) - p(t = 0); arrival = the first time
@@ -14,6 +18,7 @@ the outflow faces (air leaves through them in the MPM phase). Output: one CSV
 row per gauge on stdout.
 """
 import csv
+import json
 import math
 import os
 import sys
@@ -24,6 +29,20 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import v4_kb  # noqa: E402
 
 THESIS_CUBE_MASS = 0.01304  # kg: 20 mm cube of 1630 kg/m^3 TNT (T §3.4.3)
+
+
+def charge_mass_of_run(run_dir, scene_file):
+    """Full-charge TNT mass [kg] from the first handoff's FDM totals: the octant's
+    mass less the ambient air it would hold without the charge, times 8 (three
+    symmetry planes through the charge centre)."""
+    scene = yaml.safe_load(open(scene_file))
+    handoff = json.load(open(os.path.join(run_dir, "summary.json")))["details"]["afdmp"]["handoffs"][0]
+    lower, upper = scene["domain"]["lower"], scene["domain"]["upper"]
+    volume = math.prod(u - l for l, u in zip(lower, upper))
+    rho_air = scene["initial"]["density"]
+    rho_tnt = scene["materials"]["tnt"]["eos"]["rho0"]
+    octant = (handoff["solver_totals"]["mass"] - rho_air * volume) / (1 - rho_air / rho_tnt)
+    return 8 * octant
 
 
 def gauge_readings(run_dir, scene_file):
@@ -67,7 +86,8 @@ def compare(run_dir, scene_file, charge_mass=THESIS_CUBE_MASS):
 
 
 def main():
-    mass = float(sys.argv[3]) if len(sys.argv) > 3 else THESIS_CUBE_MASS
+    mass = sys.argv[3] if len(sys.argv) > 3 else THESIS_CUBE_MASS
+    mass = charge_mass_of_run(sys.argv[1], sys.argv[2]) if mass == "auto" else float(mass)
     rows = compare(sys.argv[1], sys.argv[2], mass)
     writer = csv.DictWriter(sys.stdout, fieldnames=list(rows[0]))
     writer.writeheader()

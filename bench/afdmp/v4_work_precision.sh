@@ -48,15 +48,15 @@ for cells in "${cells_list[@]}"; do
     if [[ "$c" == sphere_mpm ]] && ! grep -q '^    start: mpm$' "$out/$name.yaml"; then
       echo "sphere_mpm: start not switched" >&2; exit 1
     fi
-    mass=0.01304
-    [[ "$c" == sphere_* ]] && mass=0.01305
     t0=$(date +%s.%N)
     "$coupler" run "$out/$name.yaml" --out "$out/$name" --overwrite > "$out/$name.log" 2>&1
     t1=$(date +%s.%N)
     wall=$(echo "$t1 - $t0" | bc -l)
     h=$(echo "0.25 / $cells" | bc -l)
+    mass=$(/usr/bin/python3 -c "import sys; sys.path.insert(0, '$here'); import v4_analyze as a; print(a.charge_mass_of_run('$out/$name', '$out/$name.yaml'))")
     echo "$c,$cells,$h,$wall,$mass" >> "$runs"
-    /usr/bin/python3 "$here/v4_analyze.py" "$out/$name" "$out/$name.yaml" "$mass" > "$out/$name.csv"
+    # KB for the TNT the run holds (v4_analyze.py: auto)
+    /usr/bin/python3 "$here/v4_analyze.py" "$out/$name" "$out/$name.yaml" auto > "$out/$name.csv"
     echo "$name: ${wall} s"
   done
 done

@@ -30,8 +30,8 @@ namespace mpfd::verification {
 namespace {
 
 const std::string kConfigs = std::string(MPFD_SOURCE_DIR) + "/configs/";
-constexpr double kCubeMass = 0.01304;    // kg: 20 mm cube, 1630 kg/m^3 (T §3.4.3)
-constexpr double kSphereMass = 0.01305;  // kg: r = 12.41 mm
+constexpr double kCubeMass = 0.01304;     // kg: 20 mm cube, 1630 kg/m^3 (T §3.4.3)
+constexpr double kSphereMass = 0.013049;  // kg: r = 12.41 mm
 // The scenes' end: KB's arrival at the farthest gauge (R = 0.38 m) is 308 us.
 constexpr double kEnd = 3.4e-4;
 
@@ -124,6 +124,19 @@ void expect_handoffs_conserve(const nlohmann::json& summary, double tolerance) {
             << handoff.at("name") << " " << audit << " " << quantity;
 }
 
+/// The TNT mass the run holds equals `mass` (0.1 %): the first handoff's FDM
+/// totals less the octant's ambient air (1.225 kg/m^3, no charge), TNT at
+/// 1630 kg/m^3, times 8 (three mirror planes). The 3D MPM start fills the charge
+/// with particles on the grid: exact for the cube where h divides its 10 mm half
+/// side (25^3, 50^3, 100^3), not for the sphere (12.23 g on 50^3).
+void expect_charge_mass(const nlohmann::json& summary, double mass) {
+  const auto& handoff = summary.at("details").at("afdmp").at("handoffs").at(0);
+  const double octant_air = 1.225 * 0.25 * 0.25 * 0.25;
+  const double octant_tnt =
+      (handoff.at("solver_totals").at("mass").get<double>() - octant_air) / (1.0 - 1.225 / 1630.0);
+  EXPECT_NEAR(8 * octant_tnt, mass, 1e-3 * mass);
+}
+
 /// The stations with Z >= 1 (the far field; KB at its surest).
 std::vector<Station> far_field(const V4Run& run) {
   std::vector<Station> far;
@@ -150,6 +163,7 @@ void expect_monotone_decay(const V4Run& run) {
 TEST(AfdmpV4, Fast_sphere_1d_start_25_cubed_against_kingery_bulmash) {
   const auto run = run_v4("fast", "afdmp_free_air_3d_1d.yaml", 25, kSphereMass);
   expect_handoffs_conserve(run.summary, 1e-12);
+  expect_charge_mass(run.summary, kSphereMass);
   expect_monotone_decay(run);
   const auto far = far_field(run);
   ASSERT_EQ(far.size(), 4U);
@@ -168,6 +182,7 @@ TEST(AfdmpV4, Full_sphere_1d_start_converges_towards_kingery_bulmash) {
   // Measured on 50^3: worst 3.05e-12 (solver_vs_sent mass): sums over 125 000
   // cells; the coupler's own tolerance, 1e-12, is exceeded (it warns).
   expect_handoffs_conserve(fine.summary, 1e-11);
+  expect_charge_mass(fine.summary, kSphereMass);
   expect_monotone_decay(fine);
   const auto far_coarse = far_field(coarse);
   const auto far_fine = far_field(fine);
@@ -187,6 +202,7 @@ TEST(AfdmpV4, Full_thesis_cube_mpm_start_against_kingery_bulmash) {
   const auto run = run_v4("full-cube-50", "afdmp_free_air_3d.yaml", 50, kCubeMass);
   // Measured on 50^3: worst 6.7e-12 (sent_vs_received energy), see above.
   expect_handoffs_conserve(run.summary, 1e-11);
+  expect_charge_mass(run.summary, kCubeMass);
   expect_monotone_decay(run);
   // Measured (h = 5 mm, 34 s): peaks -18.2 ... -21.8 % of KB at d260 ... d380,
   // arrival +0.3 ... +5.3 %. Before the scene set solver.mpm.reference_pressure,
