@@ -5,8 +5,9 @@
 #   sphere_1d   configs/afdmp_free_air_3d_1d.yaml (start: spherical, the 1D start)
 #   sphere_mpm  the same sphere with start: mpm (3D MPM detonation: like for like)
 #   cube_mpm    configs/afdmp_free_air_3d.yaml (the thesis's 20 mm cube, start: mpm)
-# Usage: bench/afdmp/v4_work_precision.sh OUT_DIR [CELLS ...]   (default 50 80 100,
-#   i.e. h = 5, 3.125, 2.5 mm on the 0.25 m octant). Env: COUPLER (default
+# Usage: bench/afdmp/v4_work_precision.sh OUT_DIR [CELLS ...]   (default 25 50 100,
+#   i.e. h = 10, 5, 2.5 mm on the 0.25 m octant: h divides the cube's 10 mm half
+#   side; on 80^3 the MPM start's cube holds 10.75 g, not 13.04). Env: COUPLER (default
 #   build/coupler/coupler), CASES (default "sphere_1d sphere_mpm cube_mpm"),
 #   END (default: the scene's, 3.4e-4 s; KB's arrival at the farthest gauge, R = 0.38 m, is 308 us).
 # Writes OUT_DIR/<case>_<cells>/ (the run), OUT_DIR/<case>_<cells>.csv (per gauge,
@@ -18,8 +19,8 @@ here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 out="${1:?usage: v4_work_precision.sh OUT_DIR [CELLS ...]}"
 shift
-cells_list=("${@:-50 80 100}")
-[[ $# -eq 0 ]] && cells_list=(50 80 100)
+cells_list=("$@")
+[[ $# -eq 0 ]] && cells_list=(25 50 100)
 coupler="${COUPLER:-$root/build/coupler/coupler}"
 cases="${CASES:-sphere_1d sphere_mpm cube_mpm}"
 end="${END:-3.4e-4}"  # s

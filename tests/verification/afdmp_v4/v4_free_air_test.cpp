@@ -187,7 +187,7 @@ TEST(AfdmpV4, Full_sphere_1d_start_converges_towards_kingery_bulmash) {
   const auto far_coarse = far_field(coarse);
   const auto far_fine = far_field(fine);
   ASSERT_EQ(far_fine.size(), far_coarse.size());
-  // Measured (h = 5 mm, 70 s): peaks -22.0 ... -24.9 % of KB at Z = 1.10 ... 1.61
+  // Measured (h = 5 mm, 25 s): peaks -22.0 ... -24.9 % of KB at Z = 1.10 ... 1.61
   // (-29.6 ... -31.3 % at h = 10 mm), arrival -3.0 ... +0.3 %. Near field
   // (0.5 <= Z < 1): -12.8 ... -23.4 %.
   for (std::size_t i = 0; i < far_fine.size(); ++i) {
