@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
@@ -73,6 +74,11 @@ cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
 
 }  // namespace
 
+double handoff_tolerance(std::size_t values) {
+  return std::max(1e-12,
+                  2.0 * static_cast<double>(values) * std::numeric_limits<double>::epsilon());
+}
+
 Conserved placeholder_conserved(const config::Scene& scene, const AfdmpLayout& layout) {
   if (!layout.fsi_cells) return {};
   const grid::UniformGrid grid = whole_grid(scene);
@@ -127,6 +133,7 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   const ConservedError solver = relative_error(sum(sent, placeholder), held);
   HandoffRecord record;
   record.worst_error = worst_of({kernel, solver});
+  record.tolerance = handoff_tolerance(std::max(particles.size(), grid.cell_count()));
   record.stable_dt = done.stable_dt();
   record.summary = {
       {"name", "mpm_to_fdm"},
@@ -210,6 +217,7 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const auto stage_totals = stage.totals();
   HandoffRecord record;
   record.worst_error = worst_of({kernel, solver});
+  record.tolerance = handoff_tolerance(grid.cell_count());
   record.stable_dt = done.stable_dt();
   record.summary = {
       {"name", "spherical_to_fdm"},
@@ -273,6 +281,7 @@ HandoffRecord handoff_fdm_to_mpm(const config::Scene& scene, const AfdmpLayout& 
   const ConservedError solver = relative_error(sent, held);
   HandoffRecord record;
   record.worst_error = worst_of({kernel, solver});
+  record.tolerance = handoff_tolerance(std::max(particles.size(), fluid_grid.cell_count()));
   record.stable_dt = done.stable_dt();
   record.summary = {
       {"name", "fdm_to_mpm"},

@@ -32,8 +32,13 @@ struct HandoffSettings {
 struct HandoffRecord {
   nlohmann::json summary;      ///< name, counts, sums, errors, transfer sizes, wall time
   ConservedError worst_error;  ///< the largest of the three comparisons
+  double tolerance = 0;        ///< what round-off allows for its sums (handoff_tolerance)
   double stable_dt = 0;        ///< of the importing solver [s]
 };
+
+/// The relative error round-off allows a sum of `values` doubles (a handoff
+/// compares sums of up to 1e6 cells or particles): max(1e-12, 2 n eps).
+[[nodiscard]] double handoff_tolerance(std::size_t values);
 
 /// Ids of particles an FDM -> MPM handoff creates (CFDMP's injections start at 2^48).
 inline constexpr std::uint64_t kHandoffFirstId = std::uint64_t{1} << 49;

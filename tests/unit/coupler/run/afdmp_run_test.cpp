@@ -64,8 +64,10 @@ nlohmann::json run(const std::filesystem::path& scene, const std::string& out_na
   return nlohmann::json::parse(in);
 }
 
-/// Every relative error of every handoff is round-off.
+/// Every relative error of every handoff is round-off (these grids are small
+/// enough for 1e-12; the run's own bound, `tolerance`, grows with the values summed).
 void expect_round_off(const nlohmann::json& handoff) {
+  EXPECT_GE(handoff["tolerance"].get<double>(), kRoundOff);
   for (const auto& [comparison, errors] : handoff["relative_error"].items())
     for (const auto& [quantity, value] : errors.items())
       EXPECT_LE(value.get<double>(), kRoundOff)
@@ -129,7 +131,7 @@ TEST(AfdmpRun, The_chunk_size_of_a_handoff_does_not_change_the_result) {
 TEST(AfdmpRun, A_spherical_charge_detonates_in_1D_and_is_remapped_conservatively) {
   const auto scene = scene_variant(
       "afdmp_free_air_3d_1d", "v4s",
-      {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"}, {"end: 3.0e-4", "end: 2.0e-5"}});
+      {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"}, {"end: 3.4e-4", "end: 2.0e-5"}});
   const auto summary = run(scene, "out");
   EXPECT_THAT(phase_names(summary),
               ::testing::ElementsAre("spherical_detonation", "fdm_blast", "done"));
