@@ -131,7 +131,7 @@ ENERGY_BOUND = 0.1
 # Cases that exceed a bound for a reason reported and not yet fixed: recorded, not failed.
 KNOWN_DEFECTS = {
     "extreme_products_into_air": "at 400 cells thin-air particles are flung at up to 81 km/s "
-                                 "(docs/stability-runs.md)",
+                                 "(docs/stability.md (part 2))",
 }
 
 

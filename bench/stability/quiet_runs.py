@@ -31,7 +31,7 @@ ROUND_OFF_PHASE = 1e-6  # m/s: below this the 2D MPM's own growth is still round
 NEAR_FAR_BOUND = 10.0
 # Cases that exceed a bound for a reason reported and not yet fixed: recorded, not failed.
 KNOWN_DEFECTS = {
-    "quiet_cfdmp_2d_gimp": "uGIMP grows from the coupling face (docs/stability-runs.md)",
+    "quiet_cfdmp_2d_gimp": "uGIMP grows from the coupling face (docs/stability.md (part 2))",
 }
 
 

@@ -64,7 +64,7 @@ def generate(seed, steps):
         materials["steel"] = STEEL
         x0 = rng.uniform(0.6, 0.85) * length
         # At ambient pressure: at e = 0 (p = 0) the FDM, which holds every body on the
-        # whole grid in cfdmp, stops at step 0 (docs/stability-runs.md).
+        # whole grid in cfdmp, stops at step 0 (docs/stability.md (part 2)).
         bodies.append({"name": "plate", "material": "steel", "density": 7830, "pressure": P_AIR,
                        "shape": box([x0, 0, 0], [x0 + max(2 * h, 0.02 * length), upper[1], h])})
     elif extra == "solid" and method == "fdm":

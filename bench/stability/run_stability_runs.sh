@@ -1,5 +1,5 @@
 #!/bin/bash
-# The second half of the stability suite (docs/stability-runs.md): long quiet
+# The second half of the stability suite (docs/stability.md (part 2)): long quiet
 # runs, extreme deformation, coupling under stress, randomised scenes.
 # Usage: bench/stability/run_stability_runs.sh [BUILD_DIR] [OUT_DIR]
 #   BUILD_DIR  default build (needs the targets fdm_solver, mpm_solver, coupler)
