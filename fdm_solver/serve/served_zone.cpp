@@ -13,17 +13,31 @@ namespace {
   throw cosim::ProtocolError(code, "Setup: " + rule);
 }
 
+/// A served Euler zone is coupled to an MPM that owns the structures (T §3.2.3,
+/// §4.3): a body with a strength model would put tension the FDM cannot hold
+/// into cells it never exchanges and stop it at step 0. Its cells keep the
+/// scene's initial state instead.
+void without_structures(config::Scene& scene) {
+  std::erase_if(scene.bodies, [&](const config::Body& body) {
+    const config::Material* m = config::find_material(scene, body.state.material);
+    return m != nullptr && !std::holds_alternative<config::NoStrength>(m->strength);
+  });
+}
+
 config::Scene parse_fragment(const cosim::v1::Setup& setup) {
   if (setup.zone().kind() == cosim::v1::ZONE_KIND_MPM)
     reject(cosim::v1::ERROR_CODE_UNEXPECTED,
            "zone '" + setup.zone().name() + "' is an MPM zone; fdm_solver serves EULER zones");
   if (!std::isfinite(setup.start_time()))
     reject(cosim::v1::ERROR_CODE_MALFORMED, "start_time must be finite");
+  config::Scene scene;
   try {
-    return config::parse_scene(setup.scene_fragment(), "Setup.scene_fragment");
+    scene = config::parse_scene(setup.scene_fragment(), "Setup.scene_fragment");
   } catch (const Error& error) {
     reject(cosim::v1::ERROR_CODE_MALFORMED, error.what());
   }
+  without_structures(scene);
+  return scene;
 }
 
 /// A zone grid given in Setup must have the scene's cells (axes it leaves out: one cell).
