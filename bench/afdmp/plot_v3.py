@@ -6,7 +6,7 @@ OUT_DIR/v3_interface.png  air inside and products outside the interface band and
                           the anisotropy against time, per h and source
 OUT_DIR/v3_particles.png  at the finest h, 10/50/90 us: the products' volume
                           fraction of AFDMP's FDM cells and of pure MPM's binned
-                          cells, and pure MPM's particles by material (T Figs. 3.8,
+                          cells (white: no particle), and pure MPM's particles by material (T Figs. 3.8,
                           3.9; AFDMP's FDM snapshots hold no tracers)
 """
 import csv
@@ -16,6 +16,7 @@ import sys
 
 import h5py
 import matplotlib
+import numpy
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -60,7 +61,8 @@ def main(out):
             for ax, key in zip(axes, ("air_inside", "products_outside", "anisotropy")):
                 ax.plot(t, [max(float(r[key]), 1e-7) for r in sel], style,
                         label=f"{source}, h = {h:g} mm")
-    for ax, title in zip(axes, ("air inside r_i - 3h", "products beyond r_i + 3h",
+    for ax, title in zip(axes, ("air inside r_i - 3h (0 drawn at 1e-7)",
+                                "products beyond r_i + 3h (0 drawn at 1e-7)",
                                 "anisotropy (max - min) / mean r_i")):
         ax.set_yscale("log")
         ax.set_xlabel("t [us]")
@@ -74,6 +76,7 @@ def main(out):
     mpm_folder = os.path.join(out, f"v3_mpm_h{h:g}mm", "snapshots")
     sources = ((os.path.join(out, f"v3_afdmp_h{h:g}mm", "fdm", "snapshots"), "AFDMP cells"),
                (mpm_folder, "pure MPM cells"), (mpm_folder, "pure MPM particles"))
+    cmap = matplotlib.colormaps["coolwarm"].with_extremes(bad="white")
     for col, time in enumerate(TIMES):
         f = snapshot_at(mpm_folder, time)
         pos = f["particles/position"][:]
@@ -85,8 +88,10 @@ def main(out):
             f = snapshot_at(folder, time)
             if row < 2:
                 theta = f["cells/volume_fraction_tnt"][0]
+                empty = theta + f["cells/volume_fraction_air"][0] <= 0  # MPM: no particle
+                theta = numpy.ma.masked_where(empty, theta)
                 image = ax.imshow(theta, origin="lower", extent=(0, 500, 0, 500), vmin=0, vmax=1,
-                                  cmap="coolwarm", interpolation="nearest")
+                                  cmap=cmap, interpolation="nearest")
             else:
                 keep = radius * 1e3 < 1.5 * reach
                 for m, colour, label in ((0, "tab:blue", "air"), (1, "tab:red", "products")):

@@ -9,6 +9,7 @@
 // h = 5 mm, full tier h = 2 mm.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -98,8 +99,11 @@ V3Reading measure(const V3Runs& runs, double time) {
 /// At 10 us (1.4 us after the handoff) neither run has mixed yet; from 50 us
 /// pure MPM holds air inside the products and products beyond the air, AFDMP
 /// none past the 3 h band, and its interface is rounder.
-void expect_sharper(const V3Runs& runs, double anisotropy_bound) {
-  EXPECT_LE(worst_handoff_error(runs.afdmp / "summary.json"), 1e-12);
+void expect_sharper(const V3Runs& runs, double anisotropy_bound, double misplaced_bound) {
+  const auto handoffs = handoff_errors(runs.afdmp / "summary.json");
+  std::printf("V3 h = %.1f mm: worst handoff error %.2e (round-off bound %.2e)\n", runs.h * 1e3,
+              handoffs.worst, handoffs.roundoff);
+  EXPECT_LE(handoffs.worst, std::max(1e-12, handoffs.roundoff));
   for (const double time : {1e-5, 5e-5, 9e-5}) {
     const auto r = measure(runs, time);
     EXPECT_LE(r.afdmp.air_inside, r.mpm_cells.air_inside) << time;
@@ -109,8 +113,8 @@ void expect_sharper(const V3Runs& runs, double anisotropy_bound) {
     EXPECT_LT(r.afdmp.air_inside + r.afdmp.products_outside,
               r.mpm_cells.air_inside + r.mpm_cells.products_outside)
         << time;
-    EXPECT_LE(r.afdmp.air_inside, 1e-3) << time;
-    EXPECT_LE(r.afdmp.products_outside, 1e-3) << time;
+    EXPECT_LE(r.afdmp.air_inside, misplaced_bound) << time;
+    EXPECT_LE(r.afdmp.products_outside, misplaced_bound) << time;
     EXPECT_LT(r.afdmp.anisotropy, r.mpm_cells.anisotropy) << time;
   }
 }
@@ -120,7 +124,17 @@ TEST(AfdmpBlast, Fast_interface_stays_sharper_than_pure_mpm) {
   // 90 us, anisotropy 0.067, 0.065, 0.034; pure MPM (cells) 0 / 0, 0.100 /
   // 0.069, 0 / 0.231, anisotropy 0.069, 0.175, 0.060. A sector's radius moves
   // in steps of about h (5 mm of 56 mm at 10 us), hence the bound 0.08.
-  expect_sharper(run_both(100), 0.08);
+  expect_sharper(run_both(100), 0.08, 1e-3);
+}
+
+TEST(AfdmpBlast, Full_interface_stays_sharper_than_pure_mpm) {
+  // Measured (h = 2.5 mm, bench/afdmp/run_v3.sh): AFDMP anisotropy 0.022,
+  // 0.037, 0.014; air inside 0, 0, 0.010 (at 90 us five air cells in two
+  // 10-degree sectors lie inside r_i - 3h: the circle's staircase and a
+  // 2 % waviness, not mixing: no air cell is within 300 mm of the centre);
+  // products outside 0. Pure MPM (cells) air inside 0, 0.151, 0.299,
+  // products outside 0, 0.097, 0.204, anisotropy 0.028, 0.086, 0.056.
+  expect_sharper(run_both(200), 0.05, 0.02);
 }
 
 }  // namespace

@@ -90,18 +90,23 @@ PointSet cell_points(const std::filesystem::path& snapshot, const std::string& p
   return points;
 }
 
-double worst_handoff_error(const std::filesystem::path& summary_json) {
+HandoffErrors handoff_errors(const std::filesystem::path& summary_json) {
   std::ifstream in(summary_json);
   const auto summary = nlohmann::json::parse(in);
   const auto& handoffs = summary.at("details").at("afdmp").at("handoffs");
   if (handoffs.empty())
-    throw Error("worst_handoff_error: " + summary_json.string() + " lists no handoff");
-  double worst = 0;
-  for (const auto& handoff : handoffs)
+    throw Error("handoff_errors: " + summary_json.string() + " lists no handoff");
+  HandoffErrors out;
+  double terms = 0;
+  for (const auto& handoff : handoffs) {
     for (const auto& [comparison, errors] : handoff.at("relative_error").items())
       for (const auto& [quantity, error] : errors.items())
-        worst = std::max(worst, error.get<double>());
-  return worst;
+        out.worst = std::max(out.worst, error.get<double>());
+    for (const char* count : {"cells", "particles", "tracers"})
+      if (handoff.contains(count)) terms = std::max(terms, handoff.at(count).get<double>());
+  }
+  out.roundoff = 2.0 * std::max(terms - 1.0, 0.0) * std::ldexp(1.0, -53);
+  return out;
 }
 
 GaugeColumn read_gauge_column(const std::filesystem::path& csv, const std::string& header) {

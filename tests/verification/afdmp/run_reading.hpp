@@ -43,10 +43,18 @@ struct PlaneGrid {
                                    const std::string& products_fraction,
                                    const std::string& air_fraction, const PlaneGrid& grid);
 
-/// The largest relative error (mass, momentum, energy; sent vs received and
-/// solver vs sent) over the handoffs of an AFDMP summary.json
-/// (details.afdmp.handoffs); throws mpfd::Error when it lists no handoff.
-[[nodiscard]] double worst_handoff_error(const std::filesystem::path& summary_json);
+/// The handoffs of an AFDMP summary.json (details.afdmp.handoffs).
+struct HandoffErrors {
+  /// The largest relative error (mass, momentum, energy; sent vs received and solver vs sent).
+  double worst = 0;
+  /// Round-off of the audit's sums: two recursive sums of n positive terms
+  /// differ by up to 2 (n − 1) u relative (u = 2^-53; Higham, Accuracy and
+  /// Stability, §4.2), n the most cells or particles a handoff moved.
+  double roundoff = 0;
+};
+
+/// Throws mpfd::Error when the summary lists no handoff.
+[[nodiscard]] HandoffErrors handoff_errors(const std::filesystem::path& summary_json);
 
 struct GaugeColumn {
   std::vector<double> time;   ///< [s]
