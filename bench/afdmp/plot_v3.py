@@ -4,7 +4,7 @@
 OUT_DIR/v3_cost.png       wall time and peak RSS, AFDMP against pure MPM, per h
 OUT_DIR/v3_interface.png  air inside and products outside the interface band and
                           the anisotropy against time, per h and source
-OUT_DIR/v3_particles.png  at the finest h, 10/50/90 us: the products' volume
+OUT_DIR/v3_particles.png  at the finest h run by both, 10/50/90 us: the products' volume
                           fraction of AFDMP's FDM cells and of pure MPM's binned
                           cells (white: no particle), and pure MPM's particles by material (T Figs. 3.8,
                           3.9; AFDMP's FDM snapshots hold no tracers)
@@ -42,6 +42,7 @@ def main(out):
         axes[1].bar(xs, [float(rows[h]["peak_rss_mib"]) if h in rows else 0 for h in hs], 0.35,
                     label="AFDMP" if method == "afdmp" else "pure MPM")
     for ax, label in zip(axes, ("wall time [s]", "peak RSS [MiB]")):
+        ax.set_yscale("log")
         ax.set_xticks(range(len(hs)), [f"h = {h:g} mm" for h in hs])
         ax.set_ylabel(label)
         ax.legend()
@@ -71,7 +72,8 @@ def main(out):
     fig.tight_layout()
     fig.savefig(os.path.join(out, "v3_interface.png"), dpi=120)
 
-    h = hs[-1]
+    both = [h for h in hs if {r["method"] for r in runs if float(r["h_mm"]) == h} == {"afdmp", "mpm"}]
+    h = both[-1]
     fig, axes = plt.subplots(3, 3, figsize=(13, 12.5))
     mpm_folder = os.path.join(out, f"v3_mpm_h{h:g}mm", "snapshots")
     sources = ((os.path.join(out, f"v3_afdmp_h{h:g}mm", "fdm", "snapshots"), "AFDMP cells"),

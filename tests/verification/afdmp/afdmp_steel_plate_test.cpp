@@ -73,17 +73,23 @@ struct History {
   std::vector<double> time, mises;
   double peak = 0;
   int extrema = 0;
+  [[nodiscard]] double end() const { return time.empty() ? 0.0 : time.back(); }
 };
 
-/// The history from `start` while the gauge reads the plate: a gauge reads the
-/// particle nearest its fixed point, and once the plate has moved off the
-/// point (or an air particle is nearer) it reads air, whose Mises stress is 0.
+/// The history from `start` on, from the first sample that reads the plate to
+/// the last before one that does not: a gauge reads the particle nearest its
+/// fixed point, and once the plate has moved off the point (or an air particle
+/// is nearer) it reads air, whose Mises stress is 0.
 History measured(const std::vector<double>& time, const std::vector<double>& mises,
                  const std::vector<double>& density, double start) {
   History h;
   for (std::size_t k = 0; k < time.size(); ++k) {
+    // The samples up to the handoff (gauges.csv rounds its time) are the FDM's.
     if (time[k] < start) continue;
-    if (density[k] < kPlateDensity) break;
+    if (density[k] < kPlateDensity) {
+      if (h.time.empty()) continue;
+      break;
+    }
     h.time.push_back(time[k]);
     h.mises.push_back(mises[k]);
   }
@@ -180,8 +186,8 @@ V5Reading run_both(int nx) {
     std::printf(
         "  %-12s AFDMP peak %.1f MPa, %d extrema, on the plate to %.1f us | pure MPM peak %.1f "
         "MPa, %d extrema, on the plate to %.1f us\n",
-        kGauges[g].c_str(), r.afdmp[g].peak / 1e6, r.afdmp[g].extrema, r.afdmp[g].time.back() * 1e6,
-        r.mpm[g].peak / 1e6, r.mpm[g].extrema, r.mpm[g].time.back() * 1e6);
+        kGauges[g].c_str(), r.afdmp[g].peak / 1e6, r.afdmp[g].extrema, r.afdmp[g].end() * 1e6,
+        r.mpm[g].peak / 1e6, r.mpm[g].extrema, r.mpm[g].end() * 1e6);
   return r;
 }
 
