@@ -227,7 +227,7 @@ TEST(AfdmpSteelPlate, Fast_mises_histories_smooth_after_the_handoff) {
 }
 
 TEST(AfdmpSteelPlate, Full_mises_histories_smooth_after_the_handoff) {
-  // Measured (h = 2.5 mm, 433 s loaded): FDM -> MPM at 53.5 us, handoffs
+  // Measured (h = 2.5 mm, 281 s loaded): FDM -> MPM at 53.5 us, handoffs
   // 9.4e-12 (bound 5.7e-11), leak 1.9e-6 J = 7.0e-11; centre AFDMP 454 MPa,
   // 51 extrema over 54-243 us (27 per 100 us) vs pure MPM 438 MPa, 36 over
   // 54-129 us (48); edge 523 MPa, 54 over 54-300 us (22) vs 648 MPa, 76 over
