@@ -27,14 +27,6 @@ grid::UniformGrid whole_grid(const config::Scene& scene) {
   return grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper, scene.domain.cells);
 }
 
-std::vector<int> explosive_materials(const config::Scene& scene) {
-  std::vector<int> out;
-  for (const auto& charge : scene.charges)
-    for (std::size_t m = 0; m < scene.materials.size(); ++m)
-      if (scene.materials[m].name == charge.material) out.push_back(static_cast<int>(m));
-  return out;
-}
-
 /// The worst of the comparisons, by their worst component.
 ConservedError worst_of(std::initializer_list<ConservedError> errors) {
   ConservedError worst;
@@ -73,6 +65,14 @@ cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
 }
 
 }  // namespace
+
+std::vector<int> explosive_materials(const config::Scene& scene) {
+  std::vector<int> out;
+  for (const auto& charge : scene.charges)
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == charge.material) out.push_back(static_cast<int>(m));
+  return out;
+}
 
 double handoff_tolerance(std::size_t values) {
   return std::max(1e-12,

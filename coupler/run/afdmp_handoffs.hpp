@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "common/config/scene.hpp"
 #include "cosim/hub.hpp"
@@ -35,6 +36,9 @@ struct HandoffRecord {
   double tolerance = 0;        ///< what round-off allows for its sums (handoff_tolerance)
   double stable_dt = 0;        ///< of the importing solver [s]
 };
+
+/// The scene material indices of the charges' explosives.
+[[nodiscard]] std::vector<int> explosive_materials(const config::Scene& scene);
 
 /// The relative error round-off allows a sum of `values` doubles (a handoff
 /// compares sums of up to 1e6 cells or particles): max(1e-12, 2 n eps).

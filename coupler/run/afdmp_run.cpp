@@ -15,7 +15,6 @@
 #include "common/core/progress.hpp"
 #include "common/io/run_summary.hpp"
 #include "cosim/arrays.hpp"
-#include "cosim/recorder.hpp"
 #include "coupler/handoff/detonation_trigger.hpp"
 #include "coupler/run/afdmp_handoffs.hpp"
 #include "coupler/run/afdmp_layout.hpp"
@@ -39,14 +38,6 @@ double seconds_since(Clock::time_point start) {
 AfdmpStart start_of(const config::Scene& scene) {
   return scene.solver.afdmp.start == config::AfdmpStart::spherical ? AfdmpStart::spherical
                                                                    : AfdmpStart::mpm;
-}
-
-std::vector<int> explosive_materials(const config::Scene& scene) {
-  std::vector<int> out;
-  for (const auto& charge : scene.charges)
-    for (std::size_t m = 0; m < scene.materials.size(); ++m)
-      if (scene.materials[m].name == charge.material) out.push_back(static_cast<int>(m));
-  return out;
 }
 
 std::vector<cosim::Message> setups(const config::Scene& scene, const std::string& text,
@@ -450,23 +441,10 @@ class AfdmpLoop {
 CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_text,
                            cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
                            const CoupledRunOptions& options) {
-  const Logger logger("coupler");
   const AfdmpLayout layout = make_afdmp_layout(scene);
   const AfdmpStart start = start_of(scene);
-  std::unique_ptr<cosim::Recorder> recorder;
-  if (options.record) {
-    recorder = std::make_unique<cosim::Recorder>(*options.record);
-    hub.attach_recorder(recorder.get());
-  }
-  io::RunSummary summary("coupler run", scene.name, options.scene_file);
-  std::filesystem::create_directories(options.out_dir / "fdm");
-  std::filesystem::create_directories(options.out_dir / "mpm");
-  CoupledRunReport report;
-  std::set<std::string> retired;
-  try {
-    const auto hellos = hub.accept(kPeers, make_run_id());
-    for (std::size_t i = 0; i < hellos.size(); ++i)
-      logger.info("solver '", kPeers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
+  const auto body = [&](const std::vector<v1::Hello>& hellos, io::RunSummary& summary,
+                        std::set<std::string>& retired) {
     check_capabilities(hellos, start == AfdmpStart::mpm || layout.fsi_cells.has_value());
     auto messages = setups(scene, scene_text, afdmp_setup_regions(layout, start), options.out_dir);
     hub.send("fdm", std::move(messages[0]));
@@ -474,30 +452,18 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
     hub.gather(kPeers);
     AfdmpLoop loop(scene, layout, hub, summary, options);
     try {
-      report = loop.run();
+      const CoupledRunReport report = loop.run();
+      retired = loop.retired();
+      return report;
     } catch (...) {
       retired = loop.retired();
       loop.record_summary("failed", 0);
       throw;
     }
-    retired = loop.retired();
-  } catch (const std::exception& error) {
-    std::string ended;
-    for (const auto& solver : solvers)
-      if (const auto how = solver->ended()) ended += "; solver '" + solver->name() + "' " + *how;
-    const std::string text = std::string(error.what()) + ended;
-    summary.set_status("failed", text);
-    summary.write(options.out_dir / "summary.json");
-    shut_down(hub, solvers, "coupler stops: " + text, retired);
-    hub.attach_recorder(nullptr);
-    if (recorder) recorder->close();
-    throw Error("coupler run failed: " + text);
-  }
-  shut_down(hub, solvers, "run completed", retired);
-  hub.attach_recorder(nullptr);
-  if (recorder) recorder->close();
-  logger.info("done: ", report.steps, " steps to t = ", report.time, " s in ", report.wall_seconds,
-              " s");
+  };
+  const CoupledRunReport report = run_session(scene, hub, solvers, options, body);
+  Logger("coupler").info("done: ", report.steps, " steps to t = ", report.time, " s in ",
+                         report.wall_seconds, " s");
   return report;
 }
 

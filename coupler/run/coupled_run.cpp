@@ -10,7 +10,6 @@
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
 #include "common/io/run_summary.hpp"
-#include "cosim/recorder.hpp"
 #include "coupler/run/activation.hpp"
 #include "coupler/run/cfdmp_step.hpp"
 #include "coupler/run/gauges.hpp"
@@ -350,19 +349,8 @@ CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_
                            const CoupledRunOptions& options) {
   const Logger logger("coupler");
   const ZoneLayout layout = make_zone_layout(scene);
-  std::unique_ptr<cosim::Recorder> recorder;
-  if (options.record) {
-    recorder = std::make_unique<cosim::Recorder>(*options.record);
-    hub.attach_recorder(recorder.get());
-  }
-  io::RunSummary summary("coupler run", scene.name, options.scene_file);
-  std::filesystem::create_directories(options.out_dir / "fdm");
-  std::filesystem::create_directories(options.out_dir / "mpm");
-  CoupledRunReport report;
-  try {
-    const auto hellos = hub.accept(kPeers, make_run_id());
-    for (std::size_t i = 0; i < hellos.size(); ++i)
-      logger.info("solver '", kPeers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
+  const auto body = [&](const std::vector<v1::Hello>& hellos, io::RunSummary& summary,
+                        std::set<std::string>&) {
     const SolverFeatures features{.fdm_face_crossing = offers(hellos[0], "face_crossing"),
                                   .fdm_outflow = offers(hellos[0], "boundary_outflow"),
                                   .mpm_outflow = offers(hellos[1], "boundary_outflow")};
@@ -375,30 +363,14 @@ CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_
                 box_text(layout.ghost_cells));
     switch (layout.dimension) {
       case 1:
-        report = run_loop<1>(scene, layout, features, hub, summary, options);
-        break;
+        return run_loop<1>(scene, layout, features, hub, summary, options);
       case 2:
-        report = run_loop<2>(scene, layout, features, hub, summary, options);
-        break;
+        return run_loop<2>(scene, layout, features, hub, summary, options);
       default:
-        report = run_loop<3>(scene, layout, features, hub, summary, options);
-        break;
+        return run_loop<3>(scene, layout, features, hub, summary, options);
     }
-  } catch (const std::exception& error) {
-    std::string ended;
-    for (const auto& solver : solvers)
-      if (const auto how = solver->ended()) ended += "; solver '" + solver->name() + "' " + *how;
-    const std::string text = std::string(error.what()) + ended;
-    summary.set_status("failed", text);
-    summary.write(options.out_dir / "summary.json");
-    shut_down(hub, solvers, "coupler stops: " + text);
-    hub.attach_recorder(nullptr);
-    if (recorder) recorder->close();
-    throw Error("coupler run failed: " + text);
-  }
-  shut_down(hub, solvers, "run completed");
-  hub.attach_recorder(nullptr);
-  if (recorder) recorder->close();
+  };
+  const CoupledRunReport report = run_session(scene, hub, solvers, options, body);
   logger.info("done: ", report.steps, " steps to t = ", report.time, " s in ", report.wall_seconds,
               " s; mass error ", report.mass_error, ", energy error ", report.energy_error);
   return report;

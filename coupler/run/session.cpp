@@ -4,6 +4,10 @@
 #include <cstdio>
 #include <random>
 
+#include "common/core/error.hpp"
+#include "common/core/log.hpp"
+#include "cosim/recorder.hpp"
+
 namespace mpfd::coupler {
 
 std::string make_run_id() {
@@ -55,6 +59,44 @@ std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>
   for (const auto& solver : solvers)
     how += "; solver '" + solver->name() + "' " + solver->finish(std::chrono::milliseconds(2000));
   return how;
+}
+
+CoupledRunReport run_session(const config::Scene& scene, cosim::Hub& hub,
+                             std::vector<std::unique_ptr<SolverHandle>>& solvers,
+                             const CoupledRunOptions& options, const SessionBody& body) {
+  const Logger logger("coupler");
+  const std::vector<std::string> peers = {"fdm", "mpm"};
+  std::unique_ptr<cosim::Recorder> recorder;
+  if (options.record) {
+    recorder = std::make_unique<cosim::Recorder>(*options.record);
+    hub.attach_recorder(recorder.get());
+  }
+  io::RunSummary summary("coupler run", scene.name, options.scene_file);
+  std::filesystem::create_directories(options.out_dir / "fdm");
+  std::filesystem::create_directories(options.out_dir / "mpm");
+  CoupledRunReport report;
+  std::set<std::string> retired;
+  try {
+    const auto hellos = hub.accept(peers, make_run_id());
+    for (std::size_t i = 0; i < hellos.size(); ++i)
+      logger.info("solver '", peers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
+    report = body(hellos, summary, retired);
+  } catch (const std::exception& error) {
+    std::string ended;
+    for (const auto& solver : solvers)
+      if (const auto how = solver->ended()) ended += "; solver '" + solver->name() + "' " + *how;
+    const std::string text = std::string(error.what()) + ended;
+    summary.set_status("failed", text);
+    summary.write(options.out_dir / "summary.json");
+    shut_down(hub, solvers, "coupler stops: " + text, retired);
+    hub.attach_recorder(nullptr);
+    if (recorder) recorder->close();
+    throw Error("coupler run failed: " + text);
+  }
+  shut_down(hub, solvers, "run completed", retired);
+  hub.attach_recorder(nullptr);
+  if (recorder) recorder->close();
+  return report;
 }
 
 }  // namespace mpfd::coupler

@@ -3,6 +3,7 @@
 // a run id, the scene's grid on the wire, capabilities from Hello, advance
 // times from replies, and the best-effort Shutdown at the end.
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -10,7 +11,9 @@
 #include <vector>
 
 #include "common/config/scene.hpp"
+#include "common/io/run_summary.hpp"
 #include "cosim/hub.hpp"
+#include "coupler/run/coupled_run.hpp"
 #include "coupler/run/solver_handle.hpp"
 
 namespace mpfd::coupler {
@@ -33,5 +36,20 @@ namespace v1 = cosim::v1;
 /// then end the ones we started. Returns how each ended ("; solver 'fdm' ...").
 std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
                       const std::string& reason, const std::set<std::string>& already_shut = {});
+
+/// What a run does between accepting its solvers and shutting them down: gets
+/// their Hellos (in the order "fdm", "mpm") and the summary to fill; adds to
+/// `retired` every solver it has already shut down.
+using SessionBody = std::function<CoupledRunReport(
+    const std::vector<v1::Hello>& hellos, io::RunSummary& summary, std::set<std::string>& retired)>;
+
+/// The frame every coupled run shares: the recording (options.record), the
+/// output folders, Hello from both solvers (logged), then `body`. On any
+/// failure: names the solvers that ended and how, writes summary.json with
+/// status "failed", shuts the others down, closes the recording and throws
+/// mpfd::Error "coupler run failed: ...". On success: shuts the solvers down.
+CoupledRunReport run_session(const config::Scene& scene, cosim::Hub& hub,
+                             std::vector<std::unique_ptr<SolverHandle>>& solvers,
+                             const CoupledRunOptions& options, const SessionBody& body);
 
 }  // namespace mpfd::coupler
