@@ -367,7 +367,7 @@ double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
     const auto& [cell, value] = *bad;
     // p <= 0 in a scene with water or a solid is tension or the reference state (e = 0), not
     // an overshoot a smaller step avoids: water or steel beside air stops at step 0 at CFL 0.1
-    // as at 0.5, a steel body at e = 0 has p = 0 from the start (docs/stability-runs.md).
+    // as at 0.5, a steel body at e = 0 has p = 0 from the start (docs/stability.md, part 2).
     // The cell's own label may still be the gas's while the contact's flux has brought the
     // water or solid in (cell 49 beside the water at step 0), so the scene's materials decide.
     const bool holds_condensed = std::any_of(eos_.begin(), eos_.end(), [](const eos::AnyEos& eos) {

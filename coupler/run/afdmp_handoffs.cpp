@@ -16,6 +16,7 @@
 #include "coupler/remap/spherical_to_cartesian.hpp"
 #include "coupler/run/afdmp_fields.hpp"
 #include "coupler/run/field_transfer.hpp"
+#include "coupler/run/session.hpp"
 
 namespace mpfd::coupler {
 namespace {
@@ -41,10 +42,6 @@ nlohmann::json transfer_json(const FieldTransferStats& stats) {
 
 handoff::ConservedView remapped_view(const remap::CartesianFields& f) {
   return {f.density, {f.momentum[0], f.momentum[1], f.momentum[2]}, f.total_energy};
-}
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 /// Cells and tracers of the whole grid into the FDM (fields all_cells, all_tracers).
@@ -101,10 +98,20 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   const handoff::ParticleSet particles = particles_from_wire(fields, region::kFluidParticles);
   const auto burn = cosim::view_array<double>(fields, region::kFluidParticles, "burn_fraction");
   const auto explosive = explosive_materials(scene);
-  if (!handoff::detonation_complete(burn.values(), particles.material, explosive))
+  if (!handoff::detonation_complete(burn.values(), particles.material, explosive)) {
+    std::size_t p = 0;
+    while (p < particles.size() &&
+           (burn.values()[p] >= 1.0 || std::find(explosive.begin(), explosive.end(),
+                                                 particles.material[p]) == explosive.end()))
+      ++p;
     throw Error(
-        "AFDMP: the MPM -> FDM handoff found explosive particles with F < 1 in "
-        "fluid_particles; phase 1 ends only when every one has burnt (T §3.2.1)");
+        "AFDMP: the MPM -> FDM handoff found an unburnt explosive particle in "
+        "fluid_particles: number " +
+        std::to_string(p) + " at (" + std::to_string(particles.position[0][p]) + ", " +
+        std::to_string(particles.position[1][p]) + ", " + std::to_string(particles.position[2][p]) +
+        ") m, material " + std::to_string(particles.material[p]) +
+        ", F = " + std::to_string(burn.values()[p]) + "; expected F >= 1 for every one (T §3.2.1)");
+  }
 
   const grid::UniformGrid grid = whole_grid(scene);
   const handoff::CellBox fluid_box = to_cell_box(layout.fluid_cells);

@@ -31,10 +31,6 @@ using Clock = std::chrono::steady_clock;
 namespace region = afdmp_region;
 const std::vector<std::string> kPeers = {"fdm", "mpm"};
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 AfdmpStart start_of(const config::Scene& scene) {
   return scene.solver.afdmp.start == config::AfdmpStart::spherical ? AfdmpStart::spherical
                                                                    : AfdmpStart::mpm;
@@ -59,7 +55,7 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
 }
 
 /// Refuses solvers that lack what the scene needs, naming the capability.
-void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed) {
+void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed, bool fsi_zone) {
   const auto need = [&](std::size_t s, const char* capability) {
     if (!offers(hellos[s], capability))
       throw Error("solver '" + kPeers[s] + "' lacks capability '" + capability +
@@ -67,6 +63,7 @@ void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed) {
   };
   need(0, "field_chunks");
   need(0, "tracer_regions");
+  if (fsi_zone) need(0, "material_fields");
   if (mpm_needed) {
     need(1, "field_chunks");
     need(1, "particles");
@@ -251,12 +248,12 @@ class AfdmpLoop {
   BurnObservation burn_observation(const cosim::Message& reply, const char* region_name) const {
     const auto burn = cosim::view_array<double>(reply, region_name, "burn_fraction");
     const auto material = cosim::view_array<std::uint32_t>(reply, region_name, "material");
-    std::vector<int> materials(material.values().begin(), material.values().end());
+    materials_.assign(material.values().begin(), material.values().end());  // keeps its memory
     BurnObservation seen;
-    for (const int m : materials)
+    for (const int m : materials_)
       if (std::find(explosive_.begin(), explosive_.end(), m) != explosive_.end())
         ++seen.explosive_particles;
-    seen.complete = handoff::detonation_complete(burn.values(), materials, explosive_);
+    seen.complete = handoff::detonation_complete(burn.values(), materials_, explosive_);
     return seen;
   }
 
@@ -282,6 +279,9 @@ class AfdmpLoop {
     const Logger logger("coupler");
     logger.info("AFDMP: ", phase_name(transition->from), " -> ", phase_name(transition->to),
                 " at t = ", t, " s (step ", n, ", ", trigger_name(transition->trigger), ")");
+    // A handoff can outlast an idle solver's patience (an embedded solver waits 60 s):
+    // restart every clock before it begins.
+    ping_idle(std::chrono::milliseconds(0));
     std::optional<HandoffRecord> record;
     if (transition->to == AfdmpPhase::fdm_blast) {
       if (transition->from == AfdmpPhase::spherical_detonation) {
@@ -292,8 +292,9 @@ class AfdmpLoop {
           discard_mpm_fluid();
         else
           retire("mpm", "the FDM carries the blast; no FSI zone");
-        placeholder_ = placeholder_conserved(scene_, layout_);
       }
+      // Both starts leave the FSI zone's cells the scene's initial state.
+      placeholder_ = placeholder_conserved(scene_, layout_);
       holder_ = "fdm";
       contact_["fdm"] = Clock::now();
     } else if (transition->to == AfdmpPhase::mpm_fsi) {
@@ -336,10 +337,14 @@ class AfdmpLoop {
   }
 
   /// Pings every idle solver still needed whose last answer is older than keep_alive.
-  void keep_idle_alive() {
+  void keep_idle_alive() { ping_idle(options_.keep_alive); }
+
+  /// Pings every solver still needed, other than the active one, whose last answer is
+  /// older than `age`.
+  void ping_idle(std::chrono::milliseconds age) {
     for (const auto& peer : kPeers) {
       if (peer == holder_ || retired_.contains(peer)) continue;
-      if (Clock::now() - contact_[peer] < options_.keep_alive) continue;
+      if (Clock::now() - contact_[peer] < age) continue;
       cosim::Message ping;
       ping.header.mutable_ping();
       hub_.send(peer, std::move(ping));
@@ -392,6 +397,8 @@ class AfdmpLoop {
     const auto dir = options_.out_dir / "spherical";
     std::filesystem::create_directories(dir);
     std::ofstream out(dir / name.str());
+    if (!out)
+      throw Error("cannot write the 1D stage's profile '" + (dir / name.str()).string() + "'");
     out << "# 1D spherical stage at t = " << stage_->time() << " s\n"
         << "r_inner_m,r_outer_m,density_kg_m3,velocity_m_s,specific_internal_energy_J_kg,"
            "material\n";
@@ -401,6 +408,8 @@ class AfdmpLoop {
       out << shells.edges[k] << ',' << shells.edges[k + 1] << ',' << shells.density[k] << ','
           << shells.velocity[k] << ',' << shells.internal_energy[k] << ',' << shells.material[k]
           << '\n';
+    if (!out.flush())
+      throw Error("writing the 1D stage's profile '" + (dir / name.str()).string() + "' failed");
     outputs_.push_back({{"index", index},
                         {"solver", "spherical"},
                         {"time", report_.time},
@@ -412,6 +421,7 @@ class AfdmpLoop {
   AfdmpStart start_;
   PhaseMachine machine_;
   std::vector<int> explosive_;
+  mutable std::vector<int> materials_;  ///< scratch of burn_observation, kept between steps
   CoupledGauges gauges_;
   cosim::Hub& hub_;
   io::RunSummary& summary_;
@@ -445,7 +455,8 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
   const AfdmpStart start = start_of(scene);
   const auto body = [&](const std::vector<v1::Hello>& hellos, io::RunSummary& summary,
                         std::set<std::string>& retired) {
-    check_capabilities(hellos, start == AfdmpStart::mpm || layout.fsi_cells.has_value());
+    check_capabilities(hellos, start == AfdmpStart::mpm || layout.fsi_cells.has_value(),
+                       layout.fsi_cells.has_value());
     auto messages = setups(scene, scene_text, afdmp_setup_regions(layout, start), options.out_dir);
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
@@ -457,7 +468,11 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
       return report;
     } catch (...) {
       retired = loop.retired();
-      loop.record_summary("failed", 0);
+      try {
+        loop.record_summary("failed", 0);
+      } catch (const std::exception&) {
+        // The run's own error is the one to report; run_session writes the summary's status.
+      }
       throw;
     }
   };

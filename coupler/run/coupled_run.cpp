@@ -24,10 +24,6 @@ const std::vector<std::string> kPeers = {"fdm", "mpm"};
 const std::vector<std::string> kFdmOnly = {"fdm"};
 const std::vector<std::string> kMpmOnly = {"mpm"};
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 /// The Setup of each solver (proto §5, regions of §6).
 std::vector<cosim::Message> setups(const config::Scene& scene, const std::string& text,
                                    const ZoneLayout& layout, const SolverFeatures& features,
@@ -337,7 +333,11 @@ CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout,
   try {
     return loop.run();
   } catch (...) {
-    loop.record_summary("failed", 0);
+    try {
+      loop.record_summary("failed", 0);
+    } catch (const std::exception&) {
+      // The run's own error is the one to report; run_session writes the summary's status.
+    }
     throw;
   }
 }

@@ -5,6 +5,7 @@
 
 #include "common/core/error.hpp"
 #include "cosim/serving/field_stream.hpp"
+#include "coupler/run/session.hpp"
 
 namespace mpfd::coupler {
 namespace {
@@ -15,10 +16,6 @@ std::string transfer_text(std::string_view what, std::string_view peer,
   for (const auto& name : names) fields += (fields.empty() ? "" : ", ") + name;
   return std::string(what) + " of fields [" + fields + "] (transfer '" + std::string(transfer_id) +
          "') with solver '" + std::string(peer) + "'";
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::uint64_t frame_bytes(const cosim::Message& message) {

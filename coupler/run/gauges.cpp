@@ -1,6 +1,7 @@
 #include "coupler/run/gauges.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <span>
 
 #include "common/core/error.hpp"
@@ -127,7 +128,8 @@ void CoupledGauges::record_pressure(double time, std::span<const double> pressur
     throw Error("gauge pressures: " + std::to_string(pressure.size()) + " values for " +
                 std::to_string(scene_.gauges.size()) + " gauges");
   advance_schedule(time);
-  std::fill(sample_.begin(), sample_.end(), 0.0);
+  // The stage knows pressure only: the other quantities are not numbers, not zeros.
+  std::fill(sample_.begin(), sample_.end(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t g = 0; g < pressure.size(); ++g) sample_[quantities_ * g + 1] = pressure[g];
   recorder_->record(time, sample_);
 }

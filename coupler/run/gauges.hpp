@@ -51,7 +51,7 @@ class CoupledGauges {
   /// True when a sample is due at `time` (as add() decides); for a stage that
   /// samples without solvers (AFDMP's 1D spherical start).
   [[nodiscard]] bool due(double time) const;
-  /// Records pressure [Pa] at every gauge at `time` (density and velocity 0: a
+  /// Records pressure [Pa] at every gauge at `time` (the other quantities NaN: a
   /// stage that knows only pressure); call when due(time).
   void record_pressure(double time, std::span<const double> pressure);
   /// Writes gauges.h5 with every sample so far and flushes the CSV.

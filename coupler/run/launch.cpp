@@ -113,7 +113,10 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
                                                       {"mpm", mpm_endpoint}};
 
   std::vector<std::unique_ptr<SolverHandle>> solvers;
-  const std::string idle = std::to_string(std::max(10.0, 4 * launch.timeout_seconds));
+  // A solver waiting through an AFDMP handoff hears nothing for up to --handoff-timeout.
+  const double handoff_seconds = std::chrono::duration<double>(options.handoff_timeout).count();
+  const std::string idle =
+      std::to_string(std::max({10.0, 4 * launch.timeout_seconds, handoff_seconds}));
   if (launch.mode == LaunchMode::processes) {
     solvers.push_back(start_process(
         "fdm",

@@ -61,7 +61,9 @@ class Comparison {
       const auto& e = eh.field_import_done();
       const auto& g = gh.field_import_done();
       if (auto d = number("FieldImportDone.stable_dt", e.stable_dt(), g.stable_dt())) return d;
-      if (e.totals_size() != g.totals_size()) return "FieldImportDone.totals: another count";
+      if (e.totals_size() != g.totals_size())
+        return "FieldImportDone.totals: " + std::to_string(g.totals_size()) + " values, recorded " +
+               std::to_string(e.totals_size());
       for (int k = 0; k < e.totals_size(); ++k)
         if (auto d = number("FieldImportDone.totals[" + std::to_string(k) + "]", e.totals(k),
                             g.totals(k)))

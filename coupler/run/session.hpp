@@ -3,6 +3,7 @@
 // a run id, the scene's grid on the wire, capabilities from Hello, advance
 // times from replies, and the best-effort Shutdown at the end.
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <set>
@@ -19,6 +20,11 @@
 namespace mpfd::coupler {
 
 namespace v1 = cosim::v1;
+
+/// Wall seconds since `start` (phase, handoff and step timings in summary.json).
+[[nodiscard]] inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// 16 hex digits, new for every run (proto §5: HelloAck.run_id).
 [[nodiscard]] std::string make_run_id();

@@ -27,16 +27,18 @@ double handoff_radius(const config::Scene& scene) {
   return *radius;
 }
 
-int material_index(const config::Scene& scene, const std::string& name) {
-  for (std::size_t m = 0; m < scene.materials.size(); ++m)
-    if (scene.materials[m].name == name) return static_cast<int>(m);
-  throw Error("scene '" + scene.name + "': no material '" + name + "'");
-}
-
-/// kReachFactor x handoff_radius, rounded up to the 1D grid (layers end on grid lines).
+/// kReachFactor x handoff_radius, rounded down to the 1D grid (layers end on grid
+/// lines; the scene check cleared the ball of kReachFactor x handoff_radius).
 double stage_radius(const config::Scene& scene) {
   const double h = sph::options_from_scene(scene).grid_spacing;
-  return h * std::ceil(kReachFactor * handoff_radius(scene) / h - 1e-9);
+  const double radius = handoff_radius(scene);
+  const double reach = h * std::floor(kReachFactor * radius / h + 1e-9);
+  if (reach < radius + h)
+    throw Error(
+        "scene '" + scene.name + "': solver.afdmp.spherical.grid_spacing " + std::to_string(h) +
+        " m leaves the 1D stage no room beyond handoff_radius " + std::to_string(radius) +
+        " m; expected grid_spacing <= " + std::to_string((kReachFactor - 1) * radius / 2) + " m");
+  return reach;
 }
 
 }  // namespace
@@ -46,8 +48,12 @@ SphericalStage::SphericalStage(const config::Scene& scene)
       centre_(charge_centre(scene)),
       mpm_(sph::layers_from_scene(scene, centre_, stage_radius(scene)),
            sph::options_from_scene(scene)) {
-  for (const auto& layer : mpm_.layers())
-    layer_material_.push_back(material_index(scene, layer.material.name));
+  for (const auto& layer : mpm_.layers()) {
+    const config::Material* m = config::find_material(scene, layer.material.name);
+    if (m == nullptr)
+      throw Error("scene '" + scene.name + "': no material '" + layer.material.name + "'");
+    layer_material_.push_back(static_cast<int>(m - scene.materials.data()));
+  }
   ambient_pressure_ = mpm_.particles().pressure.back();
 }
 

@@ -18,7 +18,7 @@
 namespace mpfd::coupler {
 
 /// The 1D run's outer radius over the handoff radius (room for the front to arrive),
-/// rounded up to the 1D grid.
+/// rounded down to the 1D grid; the scene check (scene_checks_afdmp) clears this ball.
 inline constexpr double kReachFactor = 1.25;
 
 class SphericalStage {
@@ -34,8 +34,8 @@ class SphericalStage {
 
   /// Every explosive particle has F = 1.
   [[nodiscard]] bool burn_complete() const;
-  /// The outermost radius whose pressure exceeds the ambient one by
-  /// front_overpressure [m]; 0 before any does.
+  /// The outermost radius [m] whose pressure exceeds the ambient one by
+  /// front_overpressure [Pa]; 0 before any does.
   [[nodiscard]] double front_radius() const;
   /// Pressure [Pa] at each scene gauge's distance from the centre.
   void gauge_pressures(std::span<double> out) const;

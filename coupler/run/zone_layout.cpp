@@ -47,8 +47,7 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
   const std::string who = "scene '" + scene.name + "': ";
   if (scene.solver.method != config::Method::cfdmp || !scene.zones || !scene.zones->fdm ||
       !scene.zones->mpm)
-    throw Error(who +
-                "coupler run needs solver.method cfdmp (with zones.fdm and zones.mpm) or afdmp");
+    throw Error(who + "the CFDMP coupler needs solver.method cfdmp with zones.fdm and zones.mpm");
   ZoneLayout layout;
   layout.handshake_width = scene.zones->handshake_width;
   layout.dimension = 0;

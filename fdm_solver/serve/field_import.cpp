@@ -124,6 +124,11 @@ cosim::Message add_import_chunk(ServedZone& zone, const cosim::Message& chunk) {
   } catch (const cosim::ProtocolError&) {
     zone.pending_import.reset();
     throw;
+  } catch (const std::exception& error) {  // a frame the chunk's descriptor does not match
+    zone.pending_import.reset();
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "FieldChunk " + std::to_string(body.chunk_index()) + ": " + error.what(), false);
   }
   cosim::Message ack;
   ack.header.mutable_field_chunk_ack()->set_transfer_id(body.transfer_id());

@@ -159,9 +159,9 @@ TEST(AfdmpRun, The_FSI_zone_wakes_as_particles_when_the_blast_reaches_it) {
   const auto& trigger = handoffs[1]["trigger"];
   EXPECT_EQ(trigger["trigger"], "pressure");
   EXPECT_GT(trigger["value"].get<double>(), trigger["threshold"].get<double>());
-  // 2^d = 4 particles per fluid cell (T (3-18)) of the 30 x 50 fluid cells... at
-  // least, more in mixed cells where tracers become particles (T (3-19)).
-  EXPECT_GE(handoffs[1]["particles"].get<int>(), 4 * 65 * 50);
+  // 2^d = 4 particles per cell (T (3-18)) of the 80 x 50 fluid cells at least,
+  // more in mixed cells where tracers become particles (T (3-19)).
+  EXPECT_GE(handoffs[1]["particles"].get<int>(), 4 * 80 * 50);
   EXPECT_TRUE(handoffs[1].contains("fsi_face_leak"));
   const std::string header = read_text(scene.parent_path() / "out" / "gauges.csv").substr(0, 2000);
   EXPECT_THAT(header, HasSubstr("plate_centre.mises_stress[Pa]"));
