@@ -64,8 +64,10 @@ std::uint64_t export_tracers(const EulerSolver& solver, const TracerRegion& regi
   if (asked.empty()) asked = region.quantities;
   const grid::UniformGrid& grid = solver.state().grid;
   std::vector<std::size_t> inside;
-  if (const MultiMaterialTracker* tracker = solver.tracker()) {
-    const TracerSet& t = tracker->tracers();
+  // A one-material zone has no tracker and so no tracers: every array is empty.
+  const TracerSet* tracers = solver.tracker() ? &solver.tracker()->tracers() : nullptr;
+  if (tracers != nullptr) {
+    const TracerSet& t = *tracers;
     for (std::size_t n = 0; n < t.size(); ++n)
       if (region.holds(grid, {t.position[0][n], t.position[1][n], t.position[2][n]}))
         inside.push_back(n);
@@ -78,14 +80,13 @@ std::uint64_t export_tracers(const EulerSolver& solver, const TracerRegion& regi
         q == TracerQuantity::position ? "m" : ""};
     if (q == TracerQuantity::position) {
       std::vector<double> position(3 * count);
-      const TracerSet& t = solver.tracker()->tracers();  // count > 0 only with a tracker
-      for (std::size_t n = 0; n < count; ++n)
-        for (int a = 0; a < 3; ++a) position[3 * n + a] = t.position[a][inside[n]];
+      for (std::size_t n = 0; n < count; ++n)  // count > 0 only with tracers
+        for (int a = 0; a < 3; ++a) position[3 * n + a] = tracers->position[a][inside[n]];
       cosim::add_array(reply, spec, std::span<const double>(position));
     } else {
       std::vector<std::uint32_t> material(count);
       for (std::size_t n = 0; n < count; ++n)
-        material[n] = static_cast<std::uint32_t>(solver.tracker()->tracers().material[inside[n]]);
+        material[n] = static_cast<std::uint32_t>(tracers->material[inside[n]]);
       cosim::add_array(reply, spec, std::span<const std::uint32_t>(material));
     }
   }
