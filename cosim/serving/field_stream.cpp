@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <numeric>
 #include <optional>
 
@@ -13,17 +14,6 @@
 namespace mpfd::cosim {
 namespace {
 
-struct FieldName {
-  std::string_view region;
-  std::string_view quantity;
-};
-
-std::optional<FieldName> split_field_name(std::string_view name) {
-  const auto slash = name.find('/');
-  if (slash == std::string_view::npos || slash == 0 || slash + 1 == name.size()) return {};
-  return FieldName{name.substr(0, slash), name.substr(slash + 1)};
-}
-
 std::uint64_t values_per_row(std::span<const std::uint64_t> shape) {
   return std::accumulate(shape.begin() + 1, shape.end(), std::uint64_t{1}, std::multiplies<>());
 }
@@ -33,6 +23,12 @@ std::uint64_t values_per_row(std::span<const std::uint64_t> shape) {
 }
 
 }  // namespace
+
+std::optional<FieldName> split_field_name(std::string_view name) {
+  const auto slash = name.find('/');
+  if (slash == std::string_view::npos || slash == 0 || slash + 1 == name.size()) return {};
+  return FieldName{name.substr(0, slash), name.substr(slash + 1)};
+}
 
 std::vector<Message> slice_into_chunks(const Message& fields, std::string_view transfer_id,
                                        std::span<const std::string> names,
@@ -175,10 +171,12 @@ Message FieldAssembly::take() {
     const std::size_t count = field.shape[0] * values_per_row(field.shape);
     zmq::message_t frame;
     if (!field.bytes.empty()) {  // hand the bytes to the frame without a copy
-      auto* owner = new std::vector<std::byte>(std::move(field.bytes));
+      auto owner = std::make_unique<std::vector<std::byte>>(std::move(field.bytes));
       frame = zmq::message_t(
           owner->data(), owner->size(),
-          [](void*, void* hint) { delete static_cast<std::vector<std::byte>*>(hint); }, owner);
+          [](void*, void* hint) { delete static_cast<std::vector<std::byte>*>(hint); },
+          owner.get());
+      (void)owner.release();  // the frame owns it now
     }
     append_frame(message, {field.region, field.quantity, ArrayShape(field.shape), field.units},
                  field.dtype, count, std::move(frame));

@@ -4,6 +4,7 @@
 // assembles them back and checks that every row arrives once and in order.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -12,6 +13,17 @@
 #include "cosim/message.hpp"
 
 namespace mpfd::cosim {
+
+/// The chunk budget when FieldExportRequest.max_chunk_bytes is 0, and the coupler's default.
+inline constexpr std::uint64_t kDefaultMaxChunkBytes = std::uint64_t{64} << 20;
+
+/// A field name "<region>/<quantity>" (README §15 rule 1), both parts non-empty.
+struct FieldName {
+  std::string_view region;
+  std::string_view quantity;
+};
+/// The two parts of `name`, or nothing if it does not follow rule 1.
+[[nodiscard]] std::optional<FieldName> split_field_name(std::string_view name);
 
 /// Splits whole fields into FieldChunk messages (README §15 rule 2). `fields` holds arrays with
 /// group = region, name = quantity (as an ExportRegion reply holds them); `names` lists the

@@ -120,14 +120,12 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   handoff::ConservedCells cells;
   cells.assign(grid.cell_count());
   handoff::embed_cells(grid, fluid_box, fdm.cells.view(), cells);
-  Conserved placeholder;
   if (layout.fsi_cells) {
     const handoff::CellBox fsi_box = to_cell_box(*layout.fsi_cells);
     const auto ambient = handoff::ambient_state(scene);
     handoff::fill_ambient_cells(grid, fsi_box, ambient, cells);
     handoff::append_regular_tracers(grid, fsi_box, ambient.material,
                                     scene.solver.fdm.tracers_per_axis, fdm.tracers);
-    placeholder = placeholder_conserved(scene, layout);
   }
   const auto done =
       import_into_fdm(grid, cells, fdm.tracers, "mpm_to_fdm", hub, settings, imported);
@@ -137,7 +135,10 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   const Conserved held =
       from_totals(std::span<const double>(done.totals().data(), done.totals().size()));
   const ConservedError kernel = relative_error(received, sent);
-  const ConservedError solver = relative_error(sum(sent, placeholder), held);
+  // What the FDM should hold: the fluid cells sent plus the FSI placeholder.
+  const Conserved whole = cell_conserved(cells.view(), grid.cell_volume());
+  const Conserved placeholder = difference(whole, sent);
+  const ConservedError solver = relative_error(whole, held);
   HandoffRecord record;
   record.worst_error = worst_of({kernel, solver});
   record.tolerance = handoff_tolerance(std::max(particles.size(), grid.cell_count()));

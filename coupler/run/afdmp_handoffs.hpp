@@ -18,6 +18,7 @@
 
 #include "common/config/scene.hpp"
 #include "cosim/hub.hpp"
+#include "cosim/serving/field_stream.hpp"
 #include "coupler/run/afdmp_layout.hpp"
 #include "coupler/run/handoff_audit.hpp"
 #include "coupler/run/spherical_stage.hpp"
@@ -25,7 +26,7 @@
 namespace mpfd::coupler {
 
 struct HandoffSettings {
-  std::uint64_t max_chunk_bytes = 64ull << 20;
+  std::uint64_t max_chunk_bytes = cosim::kDefaultMaxChunkBytes;
   std::chrono::milliseconds timeout{300000};
 };
 

@@ -19,6 +19,7 @@
 
 #include "common/config/scene.hpp"
 #include "cosim/hub.hpp"
+#include "cosim/serving/field_stream.hpp"
 #include "coupler/run/solver_handle.hpp"
 
 namespace mpfd::coupler {
@@ -32,7 +33,7 @@ struct CoupledRunOptions {
   std::chrono::milliseconds keep_alive{1000};
   /// AFDMP handoffs: the largest FieldChunk frame (proto §15) and how long one
   /// chunk or commit may take (a whole-field commit can outlast a step's reply timeout).
-  std::uint64_t max_chunk_bytes = std::uint64_t{64} << 20;
+  std::uint64_t max_chunk_bytes = cosim::kDefaultMaxChunkBytes;
   std::chrono::milliseconds handoff_timeout{300000};
 };
 

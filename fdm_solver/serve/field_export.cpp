@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cosim/serving/field_stream.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/region_transfer.hpp"
 
@@ -22,12 +23,12 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
   const std::vector<std::string> names(body.fields().begin(), body.fields().end());
   cosim::Message fields;
   for (const std::string& name : names) {
-    const auto slash = name.find('/');
-    if (slash == std::string::npos)
+    const auto parts = cosim::split_field_name(name);
+    if (!parts)
       refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer,
              "field '" + name + "' is not named \"<region>/<quantity>\"");
-    const std::string region = name.substr(0, slash);
-    const std::string quantity = name.substr(slash + 1);
+    const std::string region(parts->region);
+    const std::string quantity(parts->quantity);
     try {
       if (const TracerRegion* tracers = zone.tracer_region(region)) {
         const std::vector<std::string> one{quantity};
@@ -44,7 +45,7 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
     }
   }
   const std::uint64_t budget =
-      body.max_chunk_bytes() == 0 ? kDefaultChunkBytes : body.max_chunk_bytes();
+      body.max_chunk_bytes() == 0 ? cosim::kDefaultMaxChunkBytes : body.max_chunk_bytes();
   return cosim::slice_into_chunks(fields, transfer, names, budget);
 }
 

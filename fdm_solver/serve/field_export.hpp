@@ -10,9 +10,6 @@
 
 namespace mpfd::fdm {
 
-/// The chunk budget when the request gives max_chunk_bytes = 0 (design §1.2: 64 MiB).
-inline constexpr std::uint64_t kDefaultChunkBytes = std::uint64_t{64} << 20;
-
 /// The FieldChunk messages answering `request`, in order; the serve loop
 /// replies each to the request. Throws cosim::ProtocolError, non-fatal and
 /// before any chunk exists (a refusal, README §15 rule 2), for a field name

@@ -26,14 +26,14 @@ std::vector<RegionExport> group_by_region(const ServedZone& zone,
   std::vector<RegionExport> exports;
   std::vector<std::string> seen;
   for (const auto& field : request.fields()) {
-    const auto slash = field.find('/');
-    if (slash == std::string::npos || slash == 0 || slash + 1 == field.size())
+    const auto parts = cosim::split_field_name(field);
+    if (!parts)
       refuse(cosim::v1::ERROR_CODE_MALFORMED,
              "field '" + field + "': expected '<region>/<quantity>' (proto/README.md §15)");
     if (std::find(seen.begin(), seen.end(), field) != seen.end())
       refuse(cosim::v1::ERROR_CODE_MALFORMED, "field '" + field + "' is asked twice");
     seen.push_back(field);
-    const std::string name = field.substr(0, slash);
+    const std::string name(parts->region);
     const ZoneRegion* region = nullptr;
     try {
       region = &zone.region(name, "FieldExportRequest field '" + field + "'");
@@ -47,7 +47,7 @@ std::vector<RegionExport> group_by_region(const ServedZone& zone,
       exports.back().op.set_region(name);
       found = exports.end() - 1;
     }
-    found->op.add_quantities(field.substr(slash + 1));
+    found->op.add_quantities(std::string(parts->quantity));
   }
   return exports;
 }
@@ -68,7 +68,7 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
     }
     return cosim::slice_into_chunks(
         fields, body.transfer_id(), names,
-        body.max_chunk_bytes() == 0 ? kDefaultMaxChunkBytes : body.max_chunk_bytes());
+        body.max_chunk_bytes() == 0 ? cosim::kDefaultMaxChunkBytes : body.max_chunk_bytes());
   } catch (const cosim::ProtocolError& error) {
     // An export changes nothing: every refusal leaves the zone serving.
     throw cosim::ProtocolError(error.code(), error.what(), false);

@@ -11,9 +11,6 @@
 
 namespace mpfd::mpm {
 
-/// The largest chunk when a request gives max_chunk_bytes 0 (README §15: 64 MiB).
-inline constexpr std::uint64_t kDefaultMaxChunkBytes = std::uint64_t{64} << 20;
-
 /// The FieldChunk replies to `request` (a FieldExportRequest), in request
 /// order: each region's asked quantities exported as one ExportRegion would
 /// (particle_transfer.hpp, node_transfer.hpp), then cut by slice_into_chunks.
