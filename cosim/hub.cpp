@@ -104,6 +104,7 @@ void Hub::poll_into_pending(std::chrono::milliseconds budget) {
                 " rejected: " + error.what());
   }
   if (message.header.has_error()) {
+    if (message.header.error().fatal()) fatal_peers_.insert(peer);
     throw Error("solver '" + peer + "' reported " +
                 v1::ErrorCode_Name(message.header.error().code()) + ": " +
                 message.header.error().message());

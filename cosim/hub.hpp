@@ -7,6 +7,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -58,6 +59,12 @@ class Hub {
   /// One message from each of `peers`, in their order, within one reply_timeout.
   std::vector<Message> gather(std::span<const std::string> peers);
 
+  /// True once `peer` has answered with a fatal Error: it stops after sending
+  /// it, so nothing more is sent to it or awaited from it (proto §9).
+  [[nodiscard]] bool reported_fatal_error(std::string_view peer) const {
+    return fatal_peers_.contains(peer);
+  }
+
  private:
   void poll_into_pending(std::chrono::milliseconds budget);
   void send_error_to(const std::string& peer, v1::ErrorCode code, const std::string& text);
@@ -72,6 +79,7 @@ class Hub {
   Recorder* recorder_ = nullptr;
   std::map<std::string, std::uint64_t, std::less<>> sequences_;
   std::map<std::string, std::deque<Message>, std::less<>> pending_;
+  std::set<std::string, std::less<>> fatal_peers_;
 };
 
 }  // namespace mpfd::cosim

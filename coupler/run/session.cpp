@@ -45,7 +45,11 @@ double advance_seconds(const cosim::Message& reply) {
 std::string shut_down(cosim::Hub& hub, std::vector<std::unique_ptr<SolverHandle>>& solvers,
                       const std::string& reason, const std::set<std::string>& already_shut) {
   for (const auto& solver : solvers) {
-    if (already_shut.contains(solver->name()) || solver->ended()) continue;
+    // A solver that reported a fatal error has stopped or is stopping: a Shutdown
+    // to it would wait a whole reply timeout for an answer that never comes.
+    if (already_shut.contains(solver->name()) || hub.reported_fatal_error(solver->name()) ||
+        solver->ended())
+      continue;
     try {
       cosim::Message message;
       message.header.mutable_shutdown()->set_reason(reason);

@@ -5,12 +5,15 @@
 // for that state (nodal mass ρV_c per node, internal energy pV_c/(γ-1) per
 // ghost cell, 2 particles per zone cell). It counts the mass injected into it.
 // `silent_from_step`: from that step on it stops answering (a hung solver).
+// `fatal_at_step`: at that step it answers a fatal NUMERICAL Error, then stays
+// connected and silent for `linger_ms` (a solver process still tearing down).
 // It counts the requests it gets between Setup and Shutdown and answers Activate
 // (a dormant zone), noting the Activate's sim_time.
 
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cosim/arrays.hpp"
@@ -43,6 +46,8 @@ struct StillMpm {
   double gamma = 1.4;
   double cell_volume = 0;
   std::int64_t silent_from_step = -1;
+  std::int64_t fatal_at_step = -1;
+  int linger_ms = 0;
   std::atomic<double> injected_mass{0};
   std::atomic<int> requests_after_setup{0};  ///< every request but Setup and Shutdown
   std::atomic<double> activated_at{-1};      ///< sim_time of the Activate [s]; -1: none
@@ -96,6 +101,12 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
       if (mpm.silent_from_step >= 0 &&
           static_cast<std::int64_t>(header.envelope().step()) >= mpm.silent_from_step)
         continue;
+      if (static_cast<std::int64_t>(header.envelope().step()) == mpm.fatal_at_step) {
+        participant.send_error(&request, v1::ERROR_CODE_NUMERICAL,
+                               "mpm: unphysical state of particle 0 (test)");
+        std::this_thread::sleep_for(std::chrono::milliseconds(mpm.linger_ms));
+        return;
+      }
       for (const auto& op : header.exchange().operations()) {
         auto& result = *reply.header.mutable_exchange_result()->add_results();
         if (op.has_apply()) {
