@@ -62,9 +62,10 @@ void sum_internal_energy(std::span<const std::size_t> cell_of_particle,
 }
 
 template <int Dim>
-void fill_ghost_cells(const GhostSource<Dim>& source, std::span<const std::size_t> corners,
-                      std::span<const double> support, double cell_volume,
-                      const CellOutputs<Dim>& ghost) {
+std::optional<std::size_t> fill_ghost_cells(const GhostSource<Dim>& source,
+                                            std::span<const std::size_t> corners,
+                                            std::span<const double> support, double cell_volume,
+                                            const CellOutputs<Dim>& ghost) {
   const std::size_t n = ghost.size();
   require_lengths(ghost, n, "ghost cells");
   require_length(source.cell_internal_energy.size(), n, "ghost cells", "internal_energy");
@@ -93,23 +94,22 @@ void fill_ghost_cells(const GhostSource<Dim>& source, std::span<const std::size_
         (source.cell_internal_energy[c] + 0.5 * momentum.squaredNorm() / mass) / volume;  // T (4-6)
     return 0;
   });
-  if (bad == 0) return;
+  if (bad == 0) return std::nullopt;
   for (std::size_t c = 0; c < n; ++c) {
     double mass = 0;
     for (int q = 0; q < kCorners<Dim>; ++q)
       mass += source.node_mass[corners[c * kCorners<Dim> + q]];
-    if (!(mass > 0))
-      throw Error("ghost cells: cell " + std::to_string(c) +
-                  " must receive MPM nodal mass > 0 (T (4-1)), got " +
-                  shortest_text(mass * weight));
+    if (!(mass > 0)) return c;
   }
+  return std::nullopt;  // unreachable: `bad` counted a cell without mass
 }
 
 #define MPFD_INSTANTIATE_GHOST(Dim)                                                                \
   template std::vector<std::size_t> corner_nodes<Dim>(const IndexBox<Dim>&, const IndexBox<Dim>&); \
   template std::vector<double> corner_support<Dim>(const IndexBox<Dim>&, const Index<Dim>&);       \
-  template void fill_ghost_cells<Dim>(const GhostSource<Dim>&, std::span<const std::size_t>,       \
-                                      std::span<const double>, double, const CellOutputs<Dim>&);
+  template std::optional<std::size_t> fill_ghost_cells<Dim>(                                       \
+      const GhostSource<Dim>&, std::span<const std::size_t>, std::span<const double>, double,      \
+      const CellOutputs<Dim>&);
 MPFD_INSTANTIATE_GHOST(1)
 MPFD_INSTANTIATE_GHOST(2)
 MPFD_INSTANTIATE_GHOST(3)

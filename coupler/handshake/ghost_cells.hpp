@@ -18,6 +18,7 @@
 // e_c^int comes from the MPM with the support of (4-1) (mpm_solver serve).
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -62,11 +63,15 @@ struct GhostSource {
 
 /// Writes ρ, ρv, E of each ghost cell, T (4-1) ... (4-6), for an
 /// ApplyRegion{ghost_cells, SET}. `corners` is corner_nodes(ghost cells, ghost
-/// nodes), `support` corner_support(ghost cells, domain). Throws mpfd::Error naming the cell if its
-/// interpolated mass is not > 0 (no material there to give the FDM).
+/// nodes), `support` corner_support(ghost cells, domain). Returns the first cell
+/// whose interpolated mass is not > 0 (no material there to give the FDM: the
+/// caller names it, its position and the time), or nothing if every cell got
+/// its values.
 template <int Dim>
-void fill_ghost_cells(const GhostSource<Dim>& source, std::span<const std::size_t> corners,
-                      std::span<const double> support, double cell_volume,
-                      const CellOutputs<Dim>& ghost);
+[[nodiscard]] std::optional<std::size_t> fill_ghost_cells(const GhostSource<Dim>& source,
+                                                          std::span<const std::size_t> corners,
+                                                          std::span<const double> support,
+                                                          double cell_volume,
+                                                          const CellOutputs<Dim>& ghost);
 
 }  // namespace mpfd::coupler::handshake

@@ -121,7 +121,7 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   if (flux_due_) add_face_fluxes(returned);
   add_deposit(fdm);
   if (plan.advance) {
-    if (plan.mpm) add_ghost_cells(fdm);
+    if (plan.mpm) add_ghost_cells(fdm, plan);
     add_advance(fdm, plan.dt, plan.time);
     fdm_ops_.push_back(Op::advance);
   }
@@ -277,7 +277,7 @@ void CfdmpStep<Dim>::add_cell_apply(cosim::Message& fdm, const char* region,
 }
 
 template <int Dim>
-void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm) {
+void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm, const StepPlan& plan) {
   // T (4-1) ... (4-6) from the ghost_nodes of t^n.
   const std::size_t n = ghost_cells_.count();
   auto& rho = scratch_.rho;
@@ -286,10 +286,33 @@ void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm) {
   rho.resize(n);
   energy.resize(n);
   momentum.resize(n);
-  handshake::fill_ghost_cells<Dim>({ghost_node_mass_, ghost_node_momentum_, ghost_cell_energy_},
-                                   corners_, corner_support_, geometry_.cell_volume,
-                                   {rho, momentum, energy});
+  const auto empty = handshake::fill_ghost_cells<Dim>(
+      {ghost_node_mass_, ghost_node_momentum_, ghost_cell_energy_}, corners_, corner_support_,
+      geometry_.cell_volume, {rho, momentum, energy});
+  if (empty) throw Error(empty_ghost_cell_text(*empty, plan));
   add_cell_apply(fdm, "ghost_cells", v1::ApplyRegion::MODE_SET);
+}
+
+template <int Dim>
+std::string CfdmpStep<Dim>::empty_ghost_cell_text(std::size_t c, const StepPlan& plan) const {
+  const handshake::Index<Dim> cell = ghost_cells_.at(c);
+  std::array<std::int64_t, 3> index{};
+  std::array<double, 3> centre = inactive_centre_;
+  for (int k = 0; k < Dim; ++k) {
+    const int a = layout_.active[k];
+    index[a] = cell[k];
+    centre[a] = geometry_.origin(k) + (static_cast<double>(cell[k]) + 0.5) * geometry_.spacing(k);
+  }
+  const auto list = [](const auto& v) {
+    return shortest_text(v[0]) + ", " + shortest_text(v[1]) + ", " + shortest_text(v[2]);
+  };
+  return "ghost cells: at t = " + shortest_text(plan.time) + " s (step " +
+         std::to_string(plan.step) + ") the FDM ghost cell (" + std::to_string(index[0]) + ", " +
+         std::to_string(index[1]) + ", " + std::to_string(index[2]) + ") at (" + list(centre) +
+         ") m gets no MPM nodal mass (T (4-1): its corner nodes hold none): the MPM zone has "
+         "emptied next to the zone face, so there is no material to give the FDM there. An MPM "
+         "zone must not empty: give its outer faces wall or symmetry boundaries, or move the zone "
+         "face (zones.mpm) to where inflow keeps the zone filled";
 }
 
 template <int Dim>

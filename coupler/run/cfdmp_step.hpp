@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "common/config/scene.hpp"
@@ -44,11 +45,12 @@ struct SolverFeatures {
 };
 
 struct StepPlan {
-  bool advance = false;  ///< false: step 0 or before output (no Advance, no injection)
-  double dt = 0;         ///< Δt^n [s]
-  double time = 0;       ///< t^n [s]
-  bool audit = false;    ///< export the zones' contents for the conservation audit
-  bool mpm = true;       ///< false: the MPM zone is dormant, only the FDM gets a request
+  bool advance = false;   ///< false: step 0 or before output (no Advance, no injection)
+  double dt = 0;          ///< Δt^n [s]
+  double time = 0;        ///< t^n [s]
+  std::int64_t step = 0;  ///< n of the step to t^n + Δt^n (messages)
+  bool audit = false;     ///< export the zones' contents for the conservation audit
+  bool mpm = true;        ///< false: the MPM zone is dormant, only the FDM gets a request
 };
 
 /// What one step moved across the face (for the audit and the log).
@@ -114,7 +116,9 @@ class CfdmpStep {
 
   void add_deposit(cosim::Message& fdm);
   void add_injection(cosim::Message& mpm);
-  void add_ghost_cells(cosim::Message& fdm);
+  void add_ghost_cells(cosim::Message& fdm, const StepPlan& plan);
+  /// The error for ghost cell `c` (region order) left without MPM mass.
+  [[nodiscard]] std::string empty_ghost_cell_text(std::size_t c, const StepPlan& plan) const;
   void add_interface_nodes(cosim::Message& mpm);
   void read_fdm(const StepPlan& plan, const cosim::Message& reply);
   void read_mpm(const cosim::Message& reply);

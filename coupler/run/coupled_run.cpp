@@ -148,7 +148,7 @@ class Loop {
       ++n;
       hub_.set_clock(static_cast<std::uint64_t>(n), t);
       const auto step_start = Clock::now();
-      const auto [fdm_s, mpm_s] = exchange({.advance = true, .dt = dt, .time = t});
+      const auto [fdm_s, mpm_s] = exchange({.advance = true, .dt = dt, .time = t, .step = n});
       report_.fdm_advance_seconds += fdm_s;
       report_.mpm_advance_seconds += mpm_s;
       report_.max_advance_seconds += std::max(fdm_s, mpm_s);

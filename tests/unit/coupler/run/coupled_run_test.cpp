@@ -13,7 +13,9 @@
 
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
+#include "common/core/require.hpp"
 #include "common/io/output_directory.hpp"
+#include "coupler/run/zone_layout.hpp"
 #include "fdm_solver/serve/serve.hpp"
 #include "tests/unit/coupler/run/still_mpm.hpp"
 
@@ -120,6 +122,90 @@ TEST(CoupledRun, A_silent_solver_is_named_within_the_timeout_and_the_other_is_sh
   const auto summary = read_json(out / "summary.json");
   EXPECT_EQ(summary["status"], "failed");
   EXPECT_THAT(summary["error"].get<std::string>(), HasSubstr("'mpm'"));
+}
+
+// A solver that answers with a fatal Error stops (proto §9): the run must stop at
+// once with its message, not send it a Shutdown and wait a reply timeout for the
+// answer (5 s: docs/stability.md, a cfdmp run whose FDM failed at step 0). The
+// stand-in lingers connected for 1 s after its error, as a process tearing down.
+TEST(CoupledRun, A_solvers_fatal_error_at_step_0_stops_the_run_at_once_with_its_message) {
+  Harness h(5.0);
+  h.mpm.fatal_at_step = 0;
+  h.mpm.linger_ms = 1000;
+  const std::string text = quiet_tube(2.0e-3);
+  const auto scene = config::parse_scene(text, "quiet.yaml");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  const auto out = fresh_dir("fatal");
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    run_cfdmp(scene, text, *h.hub, solvers, options(out));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), AllOf(HasSubstr("solver 'mpm' reported ERROR_CODE_NUMERICAL"),
+                                    HasSubstr("unphysical state of particle 0")));
+  }
+  // A correctness bound (well under the 5 s reply timeout), not a speed benchmark.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3.0);
+  EXPECT_THAT(solvers[0]->ended().value_or("running"), HasSubstr("returned"));
+  EXPECT_EQ(read_json(out / "summary.json")["status"], "failed");
+}
+
+// The real FDM failing in its first step (water at ambient pressure beside air in
+// its grid: tension at the contact, docs/stability.md): the run stops with the
+// FDM's own message, within a fraction of the 5 s reply timeout.
+TEST(CoupledRun, An_fdm_failing_at_step_0_stops_the_run_with_its_message) {
+  Harness h(5.0);
+  std::string text = quiet_tube(2.0e-3);
+  text.replace(text.find("initial:"), 0,
+               "  water: {eos: {type: polynomial, rho0: 1000, A1: 2.2e9, A2: 9.54e9, A3: 1.457e10, "
+               "B0: 0.28, B1: 0.28, T1: 2.2e9}}\n"
+               "bodies:\n  - {name: water, material: water, density: 1000, pressure: 1.0e5, "
+               "shape: {box: {lower: [0.1, 0, 0], upper: [0.2, 0.01, 0.01]}}}\n");
+  const auto scene = config::parse_scene(text, "water.yaml");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  const auto out = fresh_dir("fdm-step-0");
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    run_cfdmp(scene, text, *h.hub, solvers, options(out));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(),
+                AllOf(HasSubstr("solver 'fdm' reported ERROR_CODE_NUMERICAL"),
+                      HasSubstr("fdm_solver: unphysical state in cell"), HasSubstr("(step 0)")));
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3.0);
+  EXPECT_TRUE(h.mpm.shut_down);  // the other solver got Shutdown
+}
+
+// An MPM zone with no mass next to the face (T (4-1) gives the ghost cells nothing):
+// the error names the time, the step, the cell and its position, the cause and the act.
+TEST(CoupledRun, An_emptied_mpm_zone_is_named_with_time_step_cell_position_and_what_to_do) {
+  Harness h;
+  h.mpm.density = 0;
+  const std::string text = quiet_tube(2.0e-3);
+  const auto scene = config::parse_scene(text, "quiet.yaml");
+  const auto ghost = make_zone_layout(scene).ghost_cells;
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  const auto out = fresh_dir("empty");
+  try {
+    run_cfdmp(scene, text, *h.hub, solvers, options(out));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    const std::string cell = "(" + std::to_string(ghost.lo[0]) + ", 0, 0)";
+    const std::string x = shortest_text((static_cast<double>(ghost.lo[0]) + 0.5) * 0.025);
+    EXPECT_THAT(error.what(),
+                AllOf(HasSubstr("at t = 0 s (step 1)"), HasSubstr("ghost cell " + cell),
+                      HasSubstr("at (" + x + ", 0.005, 0.005) m"), HasSubstr("no MPM nodal mass"),
+                      HasSubstr("MPM zone has emptied"), HasSubstr("wall or symmetry"),
+                      HasSubstr("move the zone face")))
+        << "ghost cells " << box_text(ghost);
+  }
 }
 
 TEST(CoupledRun, A_killed_solver_process_is_named_and_outputs_are_kept) {
