@@ -132,6 +132,13 @@ void accumulate_crossed_amounts(const CrossedAmounts<Dim>& crossed, const CellSt
       returned.mass[t] = 0;
       returned.momentum[t].setZero();
       returned.energy[t] = 0;
+      // p_f only estimates the face pressure the FDM's flux holds: behind a strong
+      // wave (p* far from p_f) the corrected momentum can carry more kinetic energy
+      // than the parcel has energy, and T (4-18) would make particles with e < 0.
+      // Such a parcel goes back whole to cell a (as where the flow leaves), which
+      // keeps every total exact and the particles' energy positive.
+      if (!(pending.energy[t] - 0.5 * pending.momentum[t].squaredNorm() / pending.mass[t] > 0))
+        move_parcel(pending, t, returned);
       continue;
     }
     move_parcel(pending, t, returned);

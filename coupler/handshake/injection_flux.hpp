@@ -67,7 +67,10 @@ struct CrossedAmounts {
 /// 1.61e-2, docs/coupler.md); ρ_f is (4-10), volume m/ρ_f, travel m/(ρ_f A). Where m <= 0 the
 /// FDM's cell a received the material through its own flux while the MPM's
 /// crossing particles are deposited too: the parcel and those advective amounts
-/// (negative) go to `returned`, which cancels them. `strip` and `pressure` are
+/// (negative) go to `returned`, which cancels them. A parcel whose internal
+/// energy E - ½|P|²/M is not > 0 after the step's m > 0 (p_f far from the
+/// flux's own face pressure, behind a strong wave) also goes to `returned`,
+/// whole: T (4-18) would give its particles e < 0. `strip` and `pressure` are
 /// the strip_cells of the step's start.
 template <int Dim>
 void accumulate_crossed_amounts(const CrossedAmounts<Dim>& crossed, const CellStates<Dim>& strip,
