@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <span>
 
@@ -306,9 +307,11 @@ std::string CfdmpStep<Dim>::empty_ghost_cell_text(std::size_t c, const StepPlan&
   const auto list = [](const auto& v) {
     return shortest_text(v[0]) + ", " + shortest_text(v[1]) + ", " + shortest_text(v[2]);
   };
-  return "ghost cells: at t = " + shortest_text(plan.time) + " s (step " +
-         std::to_string(plan.step) + ") the FDM ghost cell (" + std::to_string(index[0]) + ", " +
-         std::to_string(index[1]) + ", " + std::to_string(index[2]) + ") at (" + list(centre) +
+  char time[32];
+  std::snprintf(time, sizeof time, "%g", plan.time);
+  return "ghost cells: at t = " + std::string(time) + " s (step " + std::to_string(plan.step) +
+         ") the FDM ghost cell (" + std::to_string(index[0]) + ", " + std::to_string(index[1]) +
+         ", " + std::to_string(index[2]) + ") at (" + list(centre) +
          ") m gets no MPM nodal mass (T (4-1): its corner nodes hold none): the MPM zone has "
          "emptied next to the zone face, so there is no material to give the FDM there. An MPM "
          "zone must not empty: give its outer faces wall or symmetry boundaries, or move the zone "
