@@ -67,6 +67,7 @@ std::uint64_t Hub::send_keeping_header(std::string_view peer, Message& message) 
   if (sequence_slot == sequences_.end()) sequence_slot = sequences_.emplace(peer, 0).first;
   const std::uint64_t sequence = ++sequence_slot->second;
   envelope.set_sequence(sequence);
+  if (message.header.has_shutdown()) shut_down_peers_.emplace(peer);
 
   std::vector<zmq::message_t> parts = encode(std::move(message));  // moves the frames only
   if (recorder_ != nullptr) recorder_->record(v1::DIRECTION_SENT, peer, parts);
@@ -112,6 +113,24 @@ void Hub::poll_into_pending(std::chrono::milliseconds budget) {
   pending_[peer].push_back(std::move(message));
 }
 
+void Hub::wait_into_pending(std::chrono::milliseconds budget) {
+  if (!watch_) {
+    poll_into_pending(budget);
+    return;
+  }
+  const auto deadline = Clock::now() + budget;
+  while (true) {
+    zmq::pollitem_t item{socket_.handle(), 0, ZMQ_POLLIN, 0};
+    const auto left = remaining(deadline);
+    if (zmq::poll(&item, 1, std::min(left, watch_interval)) > 0) {
+      poll_into_pending(std::chrono::milliseconds{0});
+      return;
+    }
+    watch_();
+    if (remaining(deadline).count() == 0) return;
+  }
+}
+
 void Hub::send_error_to(const std::string& peer, v1::ErrorCode code, const std::string& text) {
   Message reply;
   reply.header.mutable_error()->set_code(code);
@@ -145,7 +164,7 @@ Message Hub::receive_from(std::string_view peer, std::chrono::milliseconds timeo
     }
     const auto left = remaining(deadline);
     if (left.count() == 0) throw_timeout(peer, timeout);
-    poll_into_pending(left);
+    wait_into_pending(left);
   }
 }
 
@@ -157,7 +176,7 @@ std::vector<Message> Hub::gather(std::span<const std::string> peers) {
     while (pending_[peer].empty()) {
       const auto left = remaining(deadline);
       if (left.count() == 0) throw_timeout(peer, options_.reply_timeout);
-      poll_into_pending(left);
+      wait_into_pending(left);
     }
     replies.push_back(std::move(pending_[peer].front()));
     pending_[peer].pop_front();

@@ -59,6 +59,15 @@ class Hub {
   /// One message from each of `peers`, in their order, within one reply_timeout.
   std::vector<Message> gather(std::span<const std::string> peers);
 
+  /// A check run about every `watch_interval` while a wait hears nothing (e.g.
+  /// "has a solver process died?"); it throws to end the wait. Empty: none.
+  void set_watch(std::function<void()> watch) { watch_ = std::move(watch); }
+
+  /// True once a Shutdown has been sent to `peer` (it may end from then on).
+  [[nodiscard]] bool sent_shutdown(std::string_view peer) const {
+    return shut_down_peers_.contains(peer);
+  }
+
   /// True once `peer` has answered with a fatal Error: it stops after sending
   /// it, so nothing more is sent to it or awaited from it (proto §9).
   [[nodiscard]] bool reported_fatal_error(std::string_view peer) const {
@@ -67,6 +76,8 @@ class Hub {
 
  private:
   void poll_into_pending(std::chrono::milliseconds budget);
+  /// poll_into_pending in slices of watch_interval, running the watch after a silent slice.
+  void wait_into_pending(std::chrono::milliseconds budget);
   void send_error_to(const std::string& peer, v1::ErrorCode code, const std::string& text);
   [[noreturn]] void throw_timeout(std::string_view peer, std::chrono::milliseconds timeout) const;
 
@@ -80,6 +91,9 @@ class Hub {
   std::map<std::string, std::uint64_t, std::less<>> sequences_;
   std::map<std::string, std::deque<Message>, std::less<>> pending_;
   std::set<std::string, std::less<>> fatal_peers_;
+  std::set<std::string, std::less<>> shut_down_peers_;
+  std::function<void()> watch_;
+  static constexpr std::chrono::milliseconds watch_interval{50};
 };
 
 }  // namespace mpfd::cosim

@@ -80,12 +80,21 @@ CoupledRunReport run_session(const config::Scene& scene, cosim::Hub& hub,
   std::filesystem::create_directories(options.out_dir / "mpm");
   CoupledRunReport report;
   std::set<std::string> retired;
+  // A solver that ends without a word (killed, crashed) is named within a fraction
+  // of a second, not after a whole reply timeout; the catch below says how it ended.
+  hub.set_watch([&] {
+    for (const auto& solver : solvers)
+      if (!hub.sent_shutdown(solver->name()) && !hub.reported_fatal_error(solver->name()) &&
+          solver->ended())
+        throw Error("solver '" + solver->name() + "' ended while the coupler waited for it");
+  });
   try {
     const auto hellos = hub.accept(peers, make_run_id());
     for (std::size_t i = 0; i < hellos.size(); ++i)
       logger.info("solver '", peers[i], "': ", hellos[i].software(), " pid ", hellos[i].pid());
     report = body(hellos, summary, retired);
   } catch (const std::exception& error) {
+    hub.set_watch({});
     std::string ended;
     for (const auto& solver : solvers)
       if (const auto how = solver->ended()) ended += "; solver '" + solver->name() + "' " + *how;
@@ -97,6 +106,7 @@ CoupledRunReport run_session(const config::Scene& scene, cosim::Hub& hub,
     if (recorder) recorder->close();
     throw Error("coupler run failed: " + text);
   }
+  hub.set_watch({});
   shut_down(hub, solvers, "run completed", retired);
   hub.attach_recorder(nullptr);
   if (recorder) recorder->close();
