@@ -54,7 +54,7 @@ for cells in "${cells_list[@]}"; do
   # --timeout: one FDM step of 2e6 cells takes seconds on a loaded machine
   t=$(timed "$out/$name.log" "$coupler" run "$out/$name.yaml" --out "$out/$name" --overwrite \
         --timeout 600)
-  h=$(echo "1.25 / $cells" | bc -l)
+  h=$(printf "%.6g" "$(echo "1.25 / $cells" | bc -l)")
   echo "h = $(printf '%.4g' "$(echo "1000 * $h" | bc -l)") mm,$out/$name,$out/$name.yaml,$h,$t" >> "$runs"
 done
 /usr/bin/python3 "$here/v4_far.py" "$out" "$runs"
