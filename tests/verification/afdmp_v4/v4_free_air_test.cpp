@@ -2,8 +2,7 @@
 // incident overpressure and arrival time at the scene's gauges against the
 // Kingery-Bulmash free-air curves (tests/verification/support). One octant
 // [0, 0.25]^3 m with the charge at the origin, so R = |gauge position|.
-// Per gauge: peak overpressure = max p - p(0); arrival = first time p - p(0)
-// exceeds 10 % of that peak (linear interpolation between samples). KB covers
+// Gauges are read as v4_stations.hpp says. KB covers
 // Z >= 0.5 m/kg^(1/3): of the scene's gauges x120...x220 and d140...d220 are the
 // near field (0.5 <= Z < 1), d260...d380 have Z = 1.10...1.61.
 // Fast tier: the equal-mass sphere through the 1D start on 25^3 cells (h = 10 mm).
@@ -22,9 +21,8 @@
 #include <vector>
 
 #include "common/config/scene_loader.hpp"
-#include "common/io/hdf5_file.hpp"
 #include "coupler/run/launch.hpp"
-#include "tests/verification/support/kingery_bulmash.hpp"
+#include "tests/verification/afdmp_v4/v4_stations.hpp"
 
 namespace mpfd::verification {
 namespace {
@@ -34,31 +32,6 @@ constexpr double kCubeMass = 0.01304;     // kg: 20 mm cube, 1630 kg/m^3 (T §3.
 constexpr double kSphereMass = 0.013049;  // kg: r = 12.41 mm
 // The scenes' end: KB's arrival at the farthest gauge (R = 0.38 m) is 308 us.
 constexpr double kEnd = 3.4e-4;
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// `text` with its one `from` replaced by `to`.
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  if (at == std::string::npos)
-    ADD_FAILURE() << "scene lacks " << from;
-  else
-    text.replace(at, from.size(), to);
-  return text;
-}
-
-struct Station {
-  std::string gauge;
-  double distance = 0;  ///< R [m]
-  double peak = 0;      ///< max p - p(0) [Pa]
-  double arrival = 0;   ///< s
-  FreeAirBlast kb{};    ///< zero for Z < 0.5
-};
 
 struct V4Run {
   std::vector<Station> stations;  ///< the scene's order
@@ -87,29 +60,7 @@ V4Run run_v4(const std::string& name, const std::string& config, int cells, doub
   run.summary = nlohmann::json::parse(summary);
   const auto scene = config::load_scene(scene_file);
   EXPECT_DOUBLE_EQ(scene.time.end, kEnd);
-  const io::Hdf5File gauges(out / "gauges.h5", io::Hdf5File::Mode::read);
-  const auto t = gauges.read_dataset("/time").values;
-  const double cube_root = std::cbrt(mass);
-  for (const auto& g : scene.gauges) {
-    const auto p = gauges.read_dataset("/gauges/" + g.name + "/pressure").values;
-    Station s{g.name, std::hypot(g.position[0], g.position[1], g.position[2])};
-    s.peak = *std::max_element(p.begin(), p.end()) - p.front();
-    const double threshold = p.front() + 0.1 * s.peak;
-    for (std::size_t k = 1; k < p.size(); ++k)
-      if (p[k] > threshold) {
-        s.arrival = t[k - 1] + (threshold - p[k - 1]) / (p[k] - p[k - 1]) * (t[k] - t[k - 1]);
-        break;
-      }
-    if (s.distance / cube_root >= 0.5) s.kb = kingery_bulmash_free_air(mass, s.distance);
-    std::printf("%s %-5s R %.3f m Z %.3f  peak %.4f MPa  arrival %.2f us", name.c_str(),
-                s.gauge.c_str(), s.distance, s.distance / cube_root, s.peak / 1e6, s.arrival * 1e6);
-    if (s.kb.overpressure > 0)
-      std::printf("  KB %.4f MPa (%+5.1f %%), %.2f us (%+5.1f %%)", s.kb.overpressure / 1e6,
-                  100 * (s.peak / s.kb.overpressure - 1), s.kb.arrival_time * 1e6,
-                  100 * (s.arrival / s.kb.arrival_time - 1));
-    std::printf("\n");
-    run.stations.push_back(s);
-  }
+  run.stations = read_stations(out / "gauges.h5", scene, mass, name);
   return run;
 }
 

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# V4 far field (issue 6): the 13.05 g TNT sphere against Kingery-Bulmash at
+# Z = 0.5 ... 5 m/kg^(1/3):
+#   1d_reference  configs/afdmp_free_air_1d_reference.yaml (mpm_solver run: the
+#                 1D spherical MPM alone, h = 0.62 mm, to R = 1.3 m)
+#   octant_<n>    configs/afdmp_free_air_3d_far.yaml on n^3 cells (coupler run:
+#                 1D start to 0.2 m, then the FDM on [0, 1.25]^3 m)
+# Usage: bench/afdmp/v4_far.sh OUT_DIR [CELLS ...]   (default 50 80 125, i.e.
+#   h = 25, 15.625, 10 mm; measured 16 s / 2 min / 17 min on 2 shared cores,
+#   0.26 / 0.91 / 3.3 GB). Env: COUPLER, MPM_SOLVER (default build/...),
+#   FDM_AV (solver.fdm.artificial_viscosity for the octants; default the
+#   scene's, i.e. the solver default 1), CFL (time.cfl; default the scene's 0.3),
+#   SKIP_1D=1 (reuse OUT_DIR/1d_reference).
+# Writes OUT_DIR/<run>/ (the run), OUT_DIR/<run>.yaml, OUT_DIR/runs.csv (label,
+# run dir, scene, h, wall time, peak RSS of the largest process) and, through
+# bench/afdmp/v4_far.py, OUT_DIR/v4_far.csv (per run and gauge against KB) and
+# OUT_DIR/v4_far.png. The machine is shared: wall times compare one invocation.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+out="${1:?usage: v4_far.sh OUT_DIR [CELLS ...]}"
+shift
+cells_list=("$@")
+[[ $# -eq 0 ]] && cells_list=(50 80 125)
+coupler="${COUPLER:-$root/build/coupler/coupler}"
+mpm_solver="${MPM_SOLVER:-$root/build/mpm_solver/mpm_solver}"
+export OMP_WAIT_POLICY=passive
+mkdir -p "$out"
+runs="$out/runs.csv"
+
+timed() {  # log_file command... -> "wall_s,rss_kib" on stdout
+  local log="$1"
+  shift
+  /usr/bin/time -f "%e,%M" -o "$log.time" "$@" > "$log" 2>&1
+  cat "$log.time"
+}
+
+if [[ "${SKIP_1D:-0}" != 1 || ! -f "$out/1d_reference.row" ]]; then
+  cp "$root/configs/afdmp_free_air_1d_reference.yaml" "$out/1d_reference.yaml"
+  t=$(timed "$out/1d_reference.log" "$mpm_solver" run "$out/1d_reference.yaml" \
+        --out "$out/1d_reference" --overwrite)
+  echo "1D reference,$out/1d_reference,$out/1d_reference.yaml,0.0006205,$t" > "$out/1d_reference.row"
+fi
+echo "label,run_dir,scene,h_m,wall_s,rss_kib" > "$runs"
+cat "$out/1d_reference.row" >> "$runs"
+
+for cells in "${cells_list[@]}"; do
+  name="octant_$cells"
+  edits=(-e "s/cells: \[125, 125, 125\]/cells: [$cells, $cells, $cells]/")
+  [[ -n "${CFL:-}" ]] && edits+=(-e "s/cfl: 0.3}/cfl: $CFL}/")
+  [[ -n "${FDM_AV:-}" ]] &&
+    edits+=(-e "s/^  method: afdmp\$/  method: afdmp\n  fdm: {artificial_viscosity: $FDM_AV}/")
+  sed "${edits[@]}" "$root/configs/afdmp_free_air_3d_far.yaml" > "$out/$name.yaml"
+  # --timeout: one FDM step of 2e6 cells takes seconds on a loaded machine
+  t=$(timed "$out/$name.log" "$coupler" run "$out/$name.yaml" --out "$out/$name" --overwrite \
+        --timeout 600)
+  h=$(printf "%.6g" "$(echo "1.25 / $cells" | bc -l)")
+  echo "h = $(printf '%.4g' "$(echo "1000 * $h" | bc -l)") mm,$out/$name,$out/$name.yaml,$h,$t" >> "$runs"
+done
+/usr/bin/python3 "$here/v4_far.py" "$out" "$runs"
