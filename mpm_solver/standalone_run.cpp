@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <string>
 
 #include "common/core/error.hpp"
@@ -14,6 +15,7 @@
 #include "common/io/snapshot_writer.hpp"
 #include "common/io/standalone_loop.hpp"
 #include "mpm_solver/cell_fields.hpp"
+#include "mpm_solver/followed_gauges.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/snapshot_particles.hpp"
 
@@ -45,6 +47,9 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
                             {"velocity_x", "m/s"},
                             {"velocity_y", "m/s"},
                             {"velocity_z", "m/s"},
+                            {"position_x", "m"},
+                            {"position_y", "m"},
+                            {"position_z", "m"},
                             {"cell_density", "kg/m^3"},
                             {"cell_pressure", "Pa"},
                             {"cell_velocity_x", "m/s"},
@@ -61,21 +66,32 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
   std::vector<grid::Vec3> gauge_positions;
   for (const auto& g : points) gauge_positions.push_back(g.position);
   GaugeCells gauge_cells(solver.grid(), gauge_positions);
+  // Gauges with follow: material are bound now, at t = 0, to their particles.
+  FollowedGauges followed(scene.gauges, solver.particles(), binding_reach(solver.grid()));
+  constexpr std::size_t kParticleValues = 8, kValues = kParticleValues + 5;
   std::vector<double> cell_sample(5 * points.size());
-  std::vector<double> sample(10 * points.size());
+  std::vector<double> sample(kValues * points.size());
   const auto record_gauges = [&] {
     const ParticleSet& ps = solver.particles();
     if (ps.size() == 0) return;
     for (std::size_t g = 0; g < points.size(); ++g) {
-      const std::size_t p = nearest_particle(ps, points[g].position);
-      const double values[5] = {ps.density[p], ps.pressure[p], ps.velocity[0][p], ps.velocity[1][p],
-                                ps.velocity[2][p]};
-      std::copy(values, values + 5, sample.begin() + static_cast<std::ptrdiff_t>(10 * g));
+      const std::size_t p = followed.follows(points[g].name)
+                                ? followed.particle(points[g].name, ps)
+                                : nearest_particle(ps, points[g].position);
+      const auto at = sample.begin() + static_cast<std::ptrdiff_t>(kValues * g);
+      if (p == FollowedGauges::kLeft) {
+        std::fill_n(at, kParticleValues, std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
+      const double values[kParticleValues] = {
+          ps.density[p],     ps.pressure[p],    ps.velocity[0][p], ps.velocity[1][p],
+          ps.velocity[2][p], ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+      std::copy(values, values + kParticleValues, at);
     }
     gauge_cells.sample(ps, cell_sample);
     for (std::size_t g = 0; g < points.size(); ++g)
       std::copy_n(cell_sample.begin() + static_cast<std::ptrdiff_t>(5 * g), 5,
-                  sample.begin() + static_cast<std::ptrdiff_t>(10 * g + 5));
+                  sample.begin() + static_cast<std::ptrdiff_t>(kValues * g + kParticleValues));
     gauges.record(solver.time(), sample);
   };
 

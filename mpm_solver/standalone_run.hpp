@@ -2,7 +2,8 @@
 // `mpm_solver run`: a scene advanced to its end time with no coupler, writing
 // the output layout of docs/output.md: particle snapshots at every
 // output.interval (particles.xmf), gauges at every output.gauge_interval (or
-// every step) read from the particle nearest to each gauge, summary.json with
+// every step) read from the particle nearest to each gauge (or, with follow:
+// material, from the particle bound to it at t = 0), summary.json with
 // particle-updates per second and the audit (mass, momentum, energy and what
 // left through the faces), and a progress line.
 

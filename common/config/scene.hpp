@@ -142,9 +142,15 @@ struct Boundaries {
   BoundaryKind operator[](Face f) const { return faces[static_cast<std::size_t>(f)]; }
 };
 
+/// What a gauge samples: the fixed point `position` (whatever lies there now), or
+/// the material point bound to it at the start of the run (the thesis's tracking
+/// points, T §3.4.4): the MPM particle nearest `position` at t = 0, wherever it moves.
+enum class GaugeFollow { point, material };
+
 struct Gauge {
   std::string name;
   Vec3 position{};  ///< [m], inside the domain
+  GaugeFollow follow = GaugeFollow::point;
 };
 
 /// Cell fields a snapshot may hold (docs/output.md).

@@ -213,6 +213,41 @@ void check_mpm_only(const Scene& s, Diagnostics& d) {
   }
 }
 
+// A gauge that follows the material binds to an MPM particle at t = 0; the MPM
+// must own that point in every phase (mpm_solver/followed_gauges.hpp).
+void check_following_gauges(const Scene& s, Diagnostics& d) {
+  if (!d.clean("solver") || !d.clean("zones")) return;
+  const Method method = s.solver.method;
+  for (std::size_t i = 0; i < s.gauges.size(); ++i) {
+    const Gauge& g = s.gauges[i];
+    if (g.follow != GaugeFollow::material) continue;
+    const std::string path = item("gauges", i) + ".follow";
+    if (method == Method::fdm) {
+      d.error(path,
+              "expected point with solver.method fdm (material follows an MPM particle; "
+              "the FDM has none), got material");
+    } else if (s.domain.geometry == Geometry::spherical) {
+      d.error(path,
+              "expected point with domain.geometry spherical (the 1D run samples fixed "
+              "radii), got material");
+    } else if (method == Method::cfdmp || method == Method::afdmp) {
+      const bool held = s.zones && s.zones->mpm && [&] {
+        for (int a = 0; a < 3; ++a)
+          if (g.position[a] < s.zones->mpm->lower[a] || g.position[a] > s.zones->mpm->upper[a])
+            return false;
+        return true;
+      }();
+      if (!held) {
+        d.error(path,
+                "expected point for a gauge outside zones.mpm (material follows an MPM "
+                "particle, and only zones.mpm keeps its particles in every phase), got "
+                "material at " +
+                    text(g.position));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void check_scene(const Scene& scene, Diagnostics& diagnostics) {
@@ -226,6 +261,7 @@ void check_scene(const Scene& scene, Diagnostics& diagnostics) {
   check_zones(scene, diagnostics);
   check_spherical_geometry(scene, diagnostics);
   check_afdmp(scene, diagnostics);
+  check_following_gauges(scene, diagnostics);
 }
 
 }  // namespace mpfd::config

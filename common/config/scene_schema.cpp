@@ -176,7 +176,16 @@ std::shared_ptr<const Table<Boundaries>> boundaries_table() {
 std::shared_ptr<const Table<Gauge>> gauge_table() {
   auto t = table<Gauge>("gauges[]", "A named point whose history is recorded.");
   t->required("name", &Gauge::name, Name{}, "unique among gauges")
-      .required("position", &Gauge::position, kPoint, "inside the domain");
+      .required("position", &Gauge::position, kPoint, "inside the domain")
+      .optional(
+          "follow", &Gauge::follow,
+          Enum<GaugeFollow>({{"point", GaugeFollow::point}, {"material", GaugeFollow::material}}),
+          "point: the history at the fixed position (the cell or particle there now); "
+          "material: the MPM particle nearest the position at t = 0 (lowest id on a tie; "
+          "none within one cell is an error), followed wherever it moves (its density, "
+          "pressure, velocity, position and, with a structure, Mises stress; NaN once "
+          "it has left the domain). material needs particles there: solver.method mpm, "
+          "or a point in zones.mpm with cfdmp or afdmp");
   return t;
 }
 

@@ -223,7 +223,8 @@ class AfdmpLoop {
     dt_ = proposed_dt(reply, "mpm");
   }
 
-  /// Phase 2 (fdm) or 3 (mpm): advance, the FSI-face watch (phase 2), gauges, dt.
+  /// Phase 2 (fdm) or 3 (mpm): advance, the FSI-face watch (phase 2), gauges (phase 2's
+  /// following gauges from the idle MPM), dt.
   void step_solver(const std::string& peer, double dt, double t, GaugeSamplers samplers) {
     cosim::Message& request = peer == "fdm" ? fdm_request_ : mpm_request_;
     clear_for_reuse(fdm_request_);
@@ -238,10 +239,13 @@ class AfdmpLoop {
       const auto p = cosim::view_array<double>(reply, region::kFsiWatch, "pressure");
       observation_.watch_pressure.assign(p.values().begin(), p.values().end());
     }
-    if (peer == "fdm")
-      gauges_.read(reply, cosim::Message{});
-    else
+    if (peer == "fdm") {
+      // Gauges that follow the material are read from the idle MPM's particles.
+      const bool following = exchange_of(mpm_request_).operations_size() > 0;
+      gauges_.read(reply, following ? send_and_receive("mpm", mpm_request_) : cosim::Message{});
+    } else {
       gauges_.read(cosim::Message{}, reply);
+    }
     dt_ = proposed_dt(reply, peer);
   }
 

@@ -231,7 +231,7 @@ class Loop {
     clear_for_reuse(mpm_request_);
     step_.build(plan, fdm_request_, mpm_request_);
     gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time,
-                plan.mpm ? GaugeSamplers::owners : GaugeSamplers::fdm_only, fdm_request_,
+                plan.mpm ? GaugeSamplers::owners : GaugeSamplers::fdm_only_mpm_asleep, fdm_request_,
                 mpm_request_);
     hub_.send_keeping_header("fdm", fdm_request_);
     if (plan.mpm) hub_.send_keeping_header("mpm", mpm_request_);

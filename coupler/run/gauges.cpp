@@ -24,6 +24,8 @@ bool holds(const Box& box, const config::Vec3& point) {
 }  // namespace
 
 std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge) {
+  // The scene check keeps a following gauge inside zones.mpm (scene_checks.cpp).
+  if (gauge.follow == config::GaugeFollow::material) return "mpm";
   if (scene.solver.method == config::Method::afdmp) return "phase";
   if (scene.zones && scene.zones->mpm && holds(*scene.zones->mpm, gauge.position)) return "mpm";
   if (scene.zones && scene.zones->fdm && holds(*scene.zones->fdm, gauge.position)) return "fdm";
@@ -49,11 +51,13 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
   quantities_ = structures ? kFluidQuantities + 1 : kFluidQuantities;
   fdm_all_ = fdm_;
   mpm_all_ = mpm_;
+  following_ = mpm_;
   std::vector<io::GaugePoint> points;
   for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
     owners_.push_back(gauge_owner(scene, scene.gauges[g]));
     (owners_.back() == "mpm" ? mpm_ : fdm_).gauges.push_back(g);
-    fdm_all_.gauges.push_back(g);
+    const bool follows = scene.gauges[g].follow == config::GaugeFollow::material;
+    (follows ? following_ : fdm_all_).gauges.push_back(g);
     mpm_all_.gauges.push_back(g);
     points.push_back({scene.gauges[g].name, scene.gauges[g].position});
   }
@@ -105,7 +109,8 @@ void CoupledGauges::advance_schedule(double time) {
 
 void CoupledGauges::add(bool advance, double time, GaugeSamplers samplers, cosim::Message& fdm,
                         cosim::Message& mpm) {
-  fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = -1;
+  fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = following_.operation =
+      -1;
   if ((!advance && started_) || !due(time)) return;
   advance_schedule(time);
   switch (samplers) {
@@ -114,6 +119,10 @@ void CoupledGauges::add(bool advance, double time, GaugeSamplers samplers, cosim
       add_to(mpm_, mpm);
       break;
     case GaugeSamplers::fdm_only:
+      add_to(fdm_all_, fdm);
+      add_to(following_, mpm);
+      break;
+    case GaugeSamplers::fdm_only_mpm_asleep:
       add_to(fdm_all_, fdm);
       break;
     case GaugeSamplers::mpm_only:
@@ -130,7 +139,7 @@ void CoupledGauges::record_pressure(double time, std::span<const double> pressur
   advance_schedule(time);
   // The stage knows pressure only: the other quantities are not numbers, not zeros.
   std::fill(sample_.begin(), sample_.end(), std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t g = 0; g < pressure.size(); ++g) sample_[quantities_ * g + 1] = pressure[g];
+  for (const std::size_t g : fdm_all_.gauges) sample_[quantities_ * g + 1] = pressure[g];
   recorder_->record(time, sample_);
 }
 
@@ -153,15 +162,26 @@ void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
   }
 }
 
+void CoupledGauges::mark_unsampled_following() {
+  if (following_.operation >= 0 || mpm_.operation >= 0 || mpm_all_.operation >= 0) return;
+  for (const std::size_t g : following_.gauges)
+    std::fill_n(sample_.begin() + static_cast<std::ptrdiff_t>(quantities_ * g), quantities_,
+                std::numeric_limits<double>::quiet_NaN());
+}
+
 void CoupledGauges::read(const cosim::Message& fdm, const cosim::Message& mpm) {
-  if (fdm_.operation < 0 && mpm_.operation < 0 && fdm_all_.operation < 0 && mpm_all_.operation < 0)
+  if (fdm_.operation < 0 && mpm_.operation < 0 && fdm_all_.operation < 0 &&
+      mpm_all_.operation < 0 && following_.operation < 0)
     return;
+  mark_unsampled_following();
   read_from(fdm_all_, fdm);
+  read_from(following_, mpm);
   read_from(mpm_all_, mpm);
   read_from(fdm_, fdm);
   read_from(mpm_, mpm);
   recorder_->record(pending_time_, sample_);
-  fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = -1;
+  fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = following_.operation =
+      -1;
 }
 
 void CoupledGauges::flush() {
@@ -171,9 +191,12 @@ void CoupledGauges::flush() {
 nlohmann::json CoupledGauges::listing() const {
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t g = 0; g < scene_.gauges.size(); ++g)
-    list.push_back({{"name", scene_.gauges[g].name},
-                    {"position", scene_.gauges[g].position},
-                    {"solver", owners_[g]}});
+    list.push_back(
+        {{"name", scene_.gauges[g].name},
+         {"position", scene_.gauges[g].position},
+         {"solver", owners_[g]},
+         {"follow",
+          scene_.gauges[g].follow == config::GaugeFollow::material ? "material" : "point"}});
   return list;
 }
 

@@ -7,7 +7,10 @@
 // <out>/gauges.csv and gauges.h5 in the layout of the standalone solvers
 // (docs/output.md), so the same plot tools read them. A scene with a material
 // that has strength also records mises_stress [Pa], sampled by the MPM (0 in
-// the FDM's fluid).
+// the FDM's fluid). A gauge with follow: material is the MPM's in every phase:
+// the MPM reads the particle bound to it at Setup (mpm_solver/followed_gauges.hpp);
+// while the MPM cannot be asked (a sleeping CFDMP zone, AFDMP's 1D stage) it
+// records NaN.
 
 #include <cstddef>
 #include <filesystem>
@@ -22,16 +25,20 @@
 
 namespace mpfd::coupler {
 
-/// "mpm" for a point in the scene's MPM zone (bounds included), "fdm" for one
-/// elsewhere in the FDM zone. Throws mpfd::Error naming the gauge when neither holds it.
-/// An AFDMP scene's gauges have no owner ("phase"): each phase's solver samples them all.
+/// "mpm" for a point in the scene's MPM zone (bounds included) or a gauge that
+/// follows the material, "fdm" for one elsewhere in the FDM zone. Throws
+/// mpfd::Error naming the gauge when neither holds it. An AFDMP scene's fixed
+/// gauges have no owner ("phase"): each phase's solver samples them all.
 std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge);
 
 /// Which solvers sample the gauges of a step.
 enum class GaugeSamplers {
-  owners,    ///< each gauge by the solver whose zone holds it (CFDMP, both awake)
-  fdm_only,  ///< every gauge by the FDM (CFDMP while the MPM zone sleeps; AFDMP phase 2)
-  mpm_only,  ///< every gauge by the MPM (AFDMP phases 1 and 3)
+  owners,               ///< each gauge by the solver whose zone holds it (CFDMP, both awake)
+  fdm_only,             ///< every fixed gauge by the FDM, the following ones by the idle MPM
+                        ///< (AFDMP phase 2: the MPM holds the FSI zone's particles)
+  fdm_only_mpm_asleep,  ///< every fixed gauge by the FDM, the following ones NaN
+                        ///< (CFDMP while the MPM zone sleeps: it takes no Exchange)
+  mpm_only,             ///< every gauge by the MPM (AFDMP phases 1 and 3)
 };
 
 class CoupledGauges {
@@ -51,8 +58,9 @@ class CoupledGauges {
   /// True when a sample is due at `time` (as add() decides); for a stage that
   /// samples without solvers (AFDMP's 1D spherical start).
   [[nodiscard]] bool due(double time) const;
-  /// Records pressure [Pa] at every gauge at `time` (the other quantities NaN: a
-  /// stage that knows only pressure); call when due(time).
+  /// Records pressure [Pa] at every fixed gauge at `time` (the other quantities,
+  /// and every quantity of a following gauge, NaN: a stage that knows only the
+  /// fluid's pressure); call when due(time).
   void record_pressure(double time, std::span<const double> pressure);
   /// Writes gauges.h5 with every sample so far and flushes the CSV.
   void flush();
@@ -72,13 +80,15 @@ class CoupledGauges {
   };
   void add_to(Part& part, cosim::Message& request);
   void read_from(const Part& part, const cosim::Message& reply);
+  void mark_unsampled_following();
 
   const config::Scene& scene_;
   std::optional<io::GaugeRecorder> recorder_;
   std::vector<std::string> owners_;
   Part fdm_, mpm_;
-  Part fdm_all_;  ///< every gauge, sampled by the FDM
-  Part mpm_all_;  ///< every gauge, sampled by the MPM
+  Part fdm_all_;    ///< every fixed gauge, sampled by the FDM
+  Part following_;  ///< every gauge that follows the material, sampled by the MPM
+  Part mpm_all_;    ///< every gauge, sampled by the MPM
   void advance_schedule(double time);
   std::vector<double> values_;  ///< one quantity of a reply
   bool started_ = false;

@@ -43,15 +43,25 @@ cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double
           : std::vector<std::string>(request.fields().begin(), request.fields().end());
   const SnapshotFields fields(solver, names);
   const std::vector<io::FieldView> views = fields.views(names, scene_, solver, primitives_);
+  // The tracers as particles, as `fdm_solver run` writes them (docs/output.md).
+  std::vector<io::FieldView> tracer_views;
+  if (const auto* tracker = solver.tracker()) {
+    const TracerSet& t = tracker->tracers();
+    tracer_material_.assign(t.material.begin(), t.material.end());
+    tracer_views = {{"position", "m", {t.position[0], t.position[1], t.position[2]}},
+                    {"material", "", {tracer_material_}},
+                    {"volume", "m^3", {t.volume}}};
+  }
   cosim::v1::OutputWritten written;
   try {
     if (!writer_) writer_.emplace(out_dir_, solver.state().grid);
-    written.add_files(writer_->write(solver.steps(), time, views).string());
+    written.add_files(writer_->write(solver.steps(), time, views, tracer_views).string());
   } catch (const std::exception& error) {
     throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, "WriteOutput into '" + out_dir_.string() +
                                                              "' failed: " + error.what());
   }
   written.add_files((out_dir_ / "cells.xmf").string());
+  if (!tracer_views.empty()) written.add_files((out_dir_ / "particles.xmf").string());
   return written;
 }
 

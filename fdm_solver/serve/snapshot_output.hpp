@@ -1,7 +1,9 @@
 #pragma once
 // WriteOutput of protocol v1 (proto/README.md §8): cell snapshots in the
 // layout of docs/output.md (snapshots/snapshot_NNNNNN.h5 and cells.xmf)
-// under the Setup's output_dir, written by common/io's SnapshotWriter.
+// under the Setup's output_dir, written by common/io's SnapshotWriter; a
+// multi-material zone's tracers (position, material, volume) as its particles
+// (particles.xmf), as `fdm_solver run` writes them.
 
 #include <filesystem>
 #include <optional>
@@ -25,7 +27,8 @@ class SnapshotOutput {
 
   /// Writes one snapshot of `fields` (docs/output.md names; none: the
   /// default set) at `time`. `request.directory` must be empty or out_dir;
-  /// `basename` is not used (docs/output.md fixes the names). Throws
+  /// `basename` is not used (docs/output.md fixes the names). The files:
+  /// the snapshot, cells.xmf and, with tracers, particles.xmf. Throws
   /// cosim::ProtocolError{IO} naming the folder, field or the writer's failure.
   cosim::v1::OutputWritten write(const EulerSolver& solver, double time,
                                  const cosim::v1::WriteOutput& request);
@@ -36,6 +39,7 @@ class SnapshotOutput {
   std::vector<std::string> default_fields_;
   std::optional<io::SnapshotWriter> writer_;  // made at the first write: it creates the folder
   PrimitiveFields primitives_;
+  std::vector<double> tracer_material_;  // the tracers' material index as numbers, for output
 };
 
 }  // namespace mpfd::fdm

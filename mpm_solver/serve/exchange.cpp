@@ -88,7 +88,8 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
         break;
       case cosim::v1::Operation::kSample:
         result.mutable_sampled()->set_group(op.sample().group());
-        result.mutable_sampled()->set_count(sample_gauges(solver, op.sample(), reply));
+        result.mutable_sampled()->set_count(
+            sample_gauges(solver, zone.followed_gauges, op.sample(), reply));
         break;
       case cosim::v1::Operation::OP_NOT_SET:
         throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,

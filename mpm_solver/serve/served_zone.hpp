@@ -1,7 +1,8 @@
 #pragma once
 // The MPM zone a coupler set up (proto/README.md §5 Setup): the scene, the
 // solver built from it, the named node and particle regions, the snapshot
-// writer, and whether the zone still sleeps (Zone.dormant until Activate).
+// writer, the particles that following gauges read, and whether the zone still sleeps (Zone.dormant
+// until Activate).
 
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include "common/io/snapshot_writer.hpp"
 #include "cosim/message.hpp"
 #include "cosim/serving/field_stream.hpp"
+#include "mpm_solver/followed_gauges.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/serve/zone_region.hpp"
 #include "mpm_solver/snapshot_particles.hpp"
@@ -26,6 +28,8 @@ struct ServedZone {
   std::string scene_text;            ///< Setup.scene_fragment, kept for checkpoints
   std::filesystem::path output_dir;  ///< Setup.output_dir (may be empty)
   MpmSolver solver;
+  /// The scene's gauges with follow: material, bound at Setup to their particles (by id).
+  FollowedGauges followed_gauges;
   std::map<std::string, ZoneRegion, std::less<>> regions;
   double start_time;
   bool dormant;

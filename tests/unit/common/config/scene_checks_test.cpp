@@ -196,6 +196,30 @@ TEST(SceneChecks, Zones_lie_inside_the_domain) {
                           "0, 0] to [0.16, 0.5, 0.002], got x from 0.11 to 0.17"));
 }
 
+TEST(SceneChecks, A_gauge_follows_the_material_only_where_the_MPM_keeps_particles) {
+  const std::string follow = "gauges: [{name: g, position: [0.5, 0.5, 0], follow: material}]\n";
+  EXPECT_THAT(errors_of(kBlast + "solver: {method: fdm}\n" + follow),
+              ElementsAre(::testing::HasSubstr(
+                  "gauges[0].follow: expected point with solver.method fdm (material follows an "
+                  "MPM particle; the FDM has none), got material")));
+  EXPECT_NO_THROW(parse_scene(kBlast + "solver: {method: mpm}\n" + follow, "scene.yaml"));
+  EXPECT_EQ(parse_scene(kBlast + follow.substr(0, follow.find(", follow")) + "}]\n", "scene.yaml")
+                .gauges[0]
+                .follow,
+            GaugeFollow::point);
+  // CFDMP: inside zones.mpm (x >= 0.11) yes, in the FDM zone only no.
+  EXPECT_NO_THROW(parse_scene(
+      cfdmp(kV6Zones) + "gauges: [{name: g, position: [0.13, 0.1, 0.001], follow: material}]\n",
+      "v6.yaml"));
+  EXPECT_THAT(
+      errors_of(cfdmp(kV6Zones) +
+                "gauges: [{name: g, position: [0.0, 0.1, 0.001], follow: material}]\n"),
+      ElementsAre(::testing::HasSubstr(
+          "gauges[0].follow: expected point for a gauge outside zones.mpm (material follows an "
+          "MPM particle, and only zones.mpm keeps its particles in every phase), got material at "
+          "[0, 0.1, 0.001]")));
+}
+
 TEST(SceneChecks, Solver_method_and_zones_agree) {
   EXPECT_THAT(errors_of(cfdmp(kV6Zones, "fdm")),
               ElementsAre("scene.yaml:10:3: zones: not used by solver.method fdm or mpm (one "

@@ -130,7 +130,7 @@ TEST(CoupledGauges, The_FDM_samples_every_gauge_while_the_MPM_zone_sleeps) {
   const auto scene = config::parse_scene(tube(""), "tube.yaml");
   CoupledGauges gauges(scene, fresh_dir("dormant"));
   cosim::Message fdm, mpm;
-  gauges.add(false, 0.0, GaugeSamplers::fdm_only, fdm, mpm);
+  gauges.add(false, 0.0, GaugeSamplers::fdm_only_mpm_asleep, fdm, mpm);
   ASSERT_EQ(fdm.header.exchange().operations_size(), 1);
   EXPECT_EQ(mpm.header.exchange().operations_size(), 0);
   const auto& op = fdm.header.exchange().operations(0).sample();
@@ -139,6 +139,49 @@ TEST(CoupledGauges, The_FDM_samples_every_gauge_while_the_MPM_zone_sleeps) {
   const std::vector<std::string> fq(op.quantities().begin(), op.quantities().end());
   gauges.read(reply(1, fq, {1.0e5, 2.0e5, 3.0e5}), cosim::Message{});
   EXPECT_EQ(gauges.sample_count(), 1u);
+}
+
+// A gauge that follows the material (T §3.4.4) is the MPM's in every phase: the
+// idle MPM of AFDMP's phase 2 samples it beside the FDM; a sleeping CFDMP zone
+// and the 1D stage cannot, and it records NaN.
+TEST(CoupledGauges, A_following_gauge_is_sampled_by_the_MPM_or_recorded_as_NaN) {
+  std::string text = tube("");
+  text.replace(text.find("[0.9, 0.005, 0.005]}"), 20, "[0.9, 0.005, 0.005], follow: material}");
+  const auto scene = config::parse_scene(text, "tube.yaml");
+  EXPECT_EQ(gauge_owner(scene, scene.gauges[2]), "mpm");
+  const auto out = fresh_dir("following");
+  CoupledGauges gauges(scene, out);
+  EXPECT_EQ(gauges.listing()[2]["follow"], "material");
+  EXPECT_EQ(gauges.listing()[0]["follow"], "point");
+
+  cosim::Message fdm, mpm;
+  gauges.add(false, 0.0, GaugeSamplers::fdm_only, fdm, mpm);
+  ASSERT_EQ(fdm.header.exchange().operations_size(), 1);
+  ASSERT_EQ(mpm.header.exchange().operations_size(), 1);
+  const auto& fop = fdm.header.exchange().operations(0).sample();
+  const auto& mop = mpm.header.exchange().operations(0).sample();
+  ASSERT_EQ(fop.gauge_names_size(), 2);
+  ASSERT_EQ(mop.gauge_names_size(), 1);
+  EXPECT_EQ(mop.gauge_names(0), "c");
+  const std::vector<std::string> fq(fop.quantities().begin(), fop.quantities().end());
+  const std::vector<std::string> mq(mop.quantities().begin(), mop.quantities().end());
+  gauges.read(reply(1, fq, {1.0e5, 2.0e5}), reply(1, mq, {3.0e5}));
+
+  cosim::Message fdm2, mpm2;
+  gauges.add(true, 1.0e-4, GaugeSamplers::fdm_only_mpm_asleep, fdm2, mpm2);
+  EXPECT_EQ(mpm2.header.exchange().operations_size(), 0);
+  gauges.read(reply(1, fq, {4.0e5, 5.0e5}), cosim::Message{});
+  gauges.record_pressure(2.0e-4, std::vector<double>{6.0e5, 7.0e5, 8.0e5});
+  gauges.flush();
+  std::ifstream csv(out / "gauges.csv");
+  std::string header, first, second, third;
+  std::getline(csv, header);
+  std::getline(csv, first);
+  std::getline(csv, second);
+  std::getline(csv, third);
+  EXPECT_EQ(first, "0,1.5,100000,7,7,7,1.5,200000,7,7,7,1.5,300000,7,7,7");
+  EXPECT_EQ(second, "0.0001,1.5,400000,7,7,7,1.5,500000,7,7,7,nan,nan,nan,nan,nan");
+  EXPECT_EQ(third, "0.0002,nan,600000,nan,nan,nan,nan,700000,nan,nan,nan,nan,nan,nan,nan,nan");
 }
 
 // AFDMP's phases 1 and 3 run the MPM over the whole domain: it samples every gauge.

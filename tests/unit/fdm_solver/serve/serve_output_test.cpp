@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "checkpoint_support.hpp"
 #include "common/io/hdf5_file.hpp"
 #include "serve_harness.hpp"
 
@@ -38,6 +39,31 @@ TEST(FdmServe, WriteOutputSnapshotHoldsTheExportedDensityInTheDocumentedLayout) 
   EXPECT_EQ(density.shape, (std::vector<std::size_t>{1, 1, 20}));
   EXPECT_EQ(density.values, rho);
   std::filesystem::remove_all(dir);
+}
+
+// A multi-material zone's snapshot holds its tracers as particles, as
+// `fdm_solver run` writes them (docs/output.md): position, material, volume.
+TEST(FdmServe, WriteOutputOfAMultiMaterialZoneHoldsItsTracers) {
+  const TempDir dir("output-tracers");
+  auto zone = zone_of(corner_charge_text(8, 8), dir.path());
+  advance_stable(*zone, 3);
+  const auto written = zone->output.write(zone->solver, zone->time(), cosim::v1::WriteOutput{});
+  ASSERT_EQ(written.files_size(), 3);
+  EXPECT_EQ(written.files(2), (dir.path() / "particles.xmf").string());
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "particles.xmf"));
+  const TracerSet& tracers = zone->solver.tracker()->tracers();
+  ASSERT_GT(tracers.material.size(), 0U);
+  const io::Hdf5File h5(written.files(0), io::Hdf5File::Mode::read);
+  const auto position = h5.read_dataset("/particles/position");
+  const auto material = h5.read_dataset("/particles/material");
+  const auto volume = h5.read_dataset("/particles/volume");
+  ASSERT_EQ(material.values.size(), tracers.material.size());
+  EXPECT_EQ(volume.values, tracers.volume);
+  for (std::size_t k = 0; k < tracers.material.size(); ++k) {
+    EXPECT_EQ(material.values[k], static_cast<double>(tracers.material[k])) << k;
+    for (std::size_t a = 0; a < 3; ++a)
+      EXPECT_EQ(position.values[3 * k + a], tracers.position[a][k]) << k;
+  }
 }
 
 TEST(FdmServe, SampleGaugesReadsTheCellHoldingEachGauge) {

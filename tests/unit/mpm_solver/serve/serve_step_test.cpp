@@ -2,11 +2,13 @@
 // bit, as MpmSolver advanced directly with the same dt, over inproc and ipc;
 // exports between steps do not disturb the step; WriteOutput and Shutdown.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "common/config/scene_loader.hpp"
+#include "mpm_solver/followed_gauges.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "tests/unit/mpm_solver/serve/serve_harness.hpp"
 
@@ -14,6 +16,8 @@ namespace mpfd::mpm {
 namespace {
 
 using namespace testing;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 
 /// cfdmp_regions() and "all": every particle of the grid.
 std::vector<v1::Region> regions_with_all() {
@@ -120,6 +124,68 @@ TEST(MpmServe, GaugesReadTheNearestParticle) {
   const auto pressure = array_of(reply, "gauges", "pressure");
   EXPECT_NEAR(pressure[0], 1.0e6, 1e-6);
   EXPECT_NEAR(pressure[1], 1.0e5, 1e-7);
+}
+
+TEST(MpmServe, AFollowingGaugeReadsTheParticleBoundAtSetupAsTheDirectSolver) {
+  // A gauge on the core's edge, where the blast moves the particles outward,
+  // and a fixed one at the same point.
+  const std::string text =
+      blast_text() +
+      "gauges:\n  - {name: edge, position: [0.38, 0.5, 0.03], follow: material}\n"
+      "  - {name: fixed, position: [0.38, 0.5, 0.03]}\n";
+  ServedMpm served;
+  double dt = served.request(setup(text, {})).header.setup_ack().stable_dt();
+  const auto scene = config::parse_scene(text, "blast.yaml");
+  MpmSolver direct(scene, MpmSettings::from_scene(scene));
+  FollowedGauges followed(scene.gauges, direct.particles(), binding_reach(direct.grid()));
+  const double x0 = direct.particles().position[0][followed.particle("edge", direct.particles())];
+  double time = 0.0;
+  const std::vector<std::string> quantities = {"position_x", "position_y", "velocity_x",
+                                               "pressure"};
+  cosim::Message last;
+  for (std::uint64_t step = 1; step <= 10; ++step) {
+    served.hub().set_clock(step, time);
+    cosim::Message exchange;
+    add_advance(exchange, dt, time);
+    auto& sample = *add_op(exchange).mutable_sample();
+    sample.set_group("gauges");
+    for (const char* name : {"edge", "fixed"}) sample.add_gauge_names(name);
+    for (int g = 0; g < 2; ++g)
+      for (const double x : {0.38, 0.5, 0.03}) sample.add_positions(x);
+    for (const auto& q : quantities) sample.add_quantities(q);
+    add_propose(exchange);
+    last = served.request(std::move(exchange));
+    direct.advance(dt);
+    time += dt;
+    dt = last.header.exchange_result().results(2).proposed().stable_dt();
+  }
+  const ParticleSet& ps = direct.particles();
+  const std::size_t p = followed.particle("edge", ps);
+  const std::size_t q = nearest_particle(ps, {0.38, 0.5, 0.03});
+  const auto x = array_of(last, "gauges", "position_x");
+  const auto y = array_of(last, "gauges", "position_y");
+  const auto vx = array_of(last, "gauges", "velocity_x");
+  const auto pressure = array_of(last, "gauges", "pressure");
+  EXPECT_EQ((std::vector<double>{x[0], y[0], vx[0], pressure[0]}),
+            (std::vector<double>{ps.position[0][p], ps.position[1][p], ps.velocity[0][p],
+                                 ps.pressure[p]}));
+  EXPECT_EQ((std::vector<double>{x[1], y[1], vx[1], pressure[1]}),
+            (std::vector<double>{ps.position[0][q], ps.position[1][q], ps.velocity[0][q],
+                                 ps.pressure[q]}));
+  EXPECT_LT(vx[0], 0.0);  // the core's left edge expands toward -x
+  EXPECT_LT(x[0], x0);    // and the gauge went with it
+}
+
+TEST(MpmServe, SetupRefusesAFollowingGaugeWithNoParticleWithinOneCell) {
+  ServedMpm served;
+  // The particles fill x in [0.25, 0.75): none within a cell (0.0625 m) of x = 0.1.
+  EXPECT_THAT(
+      served.refusal(setup(
+          blast_text() + "gauges: [{name: far, position: [0.1, 0.5, 0.03], follow: material}]\n",
+          {})),
+      AllOf(HasSubstr("gauge 'far' at (0.1, 0.5, 0.03) m follows the material"),
+            HasSubstr("expected one within one cell (0.0625 m)")));
+  EXPECT_THAT(served.stop_reason(), HasSubstr("MALFORMED"));
 }
 
 TEST(MpmServe, ADormantZoneRefusesAnExchangeUntilActivated) {
