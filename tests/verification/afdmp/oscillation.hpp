@@ -6,11 +6,17 @@
 // value on either side (or the series' end), v_i − max(min_left, min_right);
 // minima as maxima of −v. A monotone history has none; one hump has one.
 
+#include <cstddef>
 #include <span>
+#include <vector>
 
 namespace mpfd::verification {
 
 /// Interior local maxima and minima of `values` with prominence > `min_prominence`.
 [[nodiscard]] int prominent_extrema(std::span<const double> values, double min_prominence);
+
+/// Indices of the interior local maxima of `values` with prominence > `min_prominence`.
+[[nodiscard]] std::vector<std::size_t> prominent_maxima(std::span<const double> values,
+                                                        double min_prominence);
 
 }  // namespace mpfd::verification
