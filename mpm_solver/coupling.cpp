@@ -32,6 +32,10 @@ ConstitutiveModel& MpmSolver::model_for(std::size_t material) {
 void MpmSolver::refuse_coupling_with_contact(const char* what) const {
   // Contact keeps per-body nodal fields sized for the scene's bodies, and a
   // coupler's loads act on the summed field only: both would be wrong.
+  if (settings_.update == config::MpmUpdate::usavg)
+    throw Error(std::string("mpm: ") + what +
+                " from a coupler with solver.mpm.update usavg is not supported (its first "
+                "half-strain does not see the coupler's nodes); expected musl or usl");
   if (contact_)
     throw Error(std::string("mpm: ") + what +
                 " from a coupler in a zone with contact between bodies is not supported yet; "

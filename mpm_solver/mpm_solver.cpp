@@ -138,6 +138,10 @@ MpmSolver::MpmSolver(const config::Scene& scene, MpmSettings settings)
                               ? eos::pressure(material->eos, s.density, *s.specific_internal_energy)
                               : 0.0;
   }
+  if (mpm.contact && settings_.update == config::MpmUpdate::usavg)
+    throw Error("scene '" + scene.name +
+                "': solver.mpm.update usavg is not supported with solver.mpm.contact yet; "
+                "expected musl or usl");
   if (mpm.contact) {
     contact_ = true;
     friction_ = mpm.contact->friction;
@@ -192,12 +196,15 @@ void MpmSolver::advance(double dt) {
   rebuild_grid();
   if (contact_) mark_shared_nodes();
   particles_to_grid();
+  if (settings_.update == config::MpmUpdate::usavg) {
+    strain_from_start_velocities(dt);
+    grid_.allocate_nodes();  // the particles have not moved: same blocks, zeroed sums
+    particles_to_grid();     // the forces of the half-updated stress
+  }
   added_node_state_.clear();  // only this step's loads enter the remap
   if (!node_loads_.empty()) apply_node_loads();
   integrate_nodes(dt);
-  if (settings_.update == config::MpmUpdate::musl) {
-    update_and_remap_velocities(dt);
-  }
+  if (settings_.update != config::MpmUpdate::usl) update_and_remap_velocities(dt);
   update_particles(dt);
   particle_updates_ += static_cast<double>(particles_.size());
   time_ += dt;
@@ -785,102 +792,146 @@ void MpmSolver::update_and_remap_velocities(double dt) {
   apply_face_conditions_to_remap();
 }
 
+void MpmSolver::strain_from_start_velocities(double dt) {
+  auto& ps = particles_;
+  auto& velocity = grid_.remapped;  // scratch until the remap: v_I^n = p_I / m_I
+  for_each_node(grid_.node_count(), [&](std::size_t n) {
+    const double m = grid_.mass[n];
+    const double inverse = m > 0.0 ? 1.0 / m : 0.0;
+    for (int a = 0; a < 3; ++a) velocity[a][n] = grid_.momentum[a][n] * inverse;
+  });
+  apply_face_conditions_to_remap();
+  const double half = 0.5 * dt;
+  const double t_half = time_ + half;
+  leaving_.assign(ps.size(), 0);
+  std::size_t collapsed = 0;
+  dispatch_stencil(
+      settings_.shape_function != config::ShapeFunction::linear, axis_mask_,
+      [&](auto width, auto mask) {
+        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+        collapsed = parallel_sum(ps.size(), [&](std::size_t p) -> std::size_t {
+          if (has_fixed_ && body_fixed_[ps.body[p]] != 0) return 0;
+          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+          S s;
+          double half_width[3];
+          particle_half_width(p, half_width);
+          compute_stencil(x, half_width, geometry_, grid_, s);
+          Tensor3 l = Tensor3::Zero();
+          for (int c = 0; c < S::kCount; ++c)
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j) l(i, j) += velocity[i][s.node[c]] * s.gradient[c][j];
+          if (strain_particle(p, l, half, t_half)) return 0;
+          leaving_[p] = 1;
+          return 1;
+        });
+      });
+  if (collapsed > 0) throw_collapsed(collapsed, t_half);
+}
+
 void MpmSolver::update_particles(double dt) {
   auto& ps = particles_;
-  const bool musl = settings_.update == config::MpmUpdate::musl;
+  const bool usl = settings_.update == config::MpmUpdate::usl;
   const auto& position_velocity = grid_.momentum;  // p^{n+1} / m, (2-16)
-  const auto& strain_velocity = musl ? grid_.remapped : grid_.momentum;
+  const auto& strain_velocity = usl ? grid_.momentum : grid_.remapped;
   const auto& accel = grid_.force;
   const auto& cf = contact_fields_;
   const auto& body_position_velocity = cf.momentum;
-  const auto& body_strain_velocity = musl ? cf.remapped : cf.momentum;
+  const auto& body_strain_velocity = usl ? cf.momentum : cf.remapped;
   const auto& body_accel = cf.force;
   const auto& g = grid_.grid();
   const bool active[3] = {g.is_active(0), g.is_active(1), g.is_active(2)};
   const double t1 = time_ + dt;
+  // USAVG strained the first half in strain_from_start_velocities.
+  const double strain_dt = settings_.update == config::MpmUpdate::usavg ? 0.5 * dt : dt;
   std::size_t collapsed = 0;
   leaving_.assign(ps.size(), 0);  // scratch here: marks collapsed particles
-  dispatch_kernel(
-      settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
-      [&](auto width, auto mask, auto with_contact) {
-        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-        constexpr bool kContact = decltype(with_contact)::value;
-        collapsed = parallel_sum(ps.size(), [&](std::size_t p) -> std::size_t {
-          const int body_index = ps.body[p];
-          // A fixed particle set stays where it is, at rest, unstrained.
-          if (has_fixed_ && body_fixed_[static_cast<std::size_t>(body_index)] != 0) return 0;
-          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
-          S s;
-          const BodyInfo& body = bodies_[static_cast<std::size_t>(body_index)];
-          double half_width[3];
-          particle_half_width(p, half_width);
-          compute_stencil(x, half_width, geometry_, grid_, s);
-          double dx[3] = {0.0, 0.0, 0.0};
-          double dv[3] = {0.0, 0.0, 0.0};
-          Tensor3 l = Tensor3::Zero();  // velocity gradient sum_I v_iI N_I,j
-          for (int c = 0; c < S::kCount; ++c) {
-            const std::vector<double>* vx = position_velocity.data();
-            const std::vector<double>* ve = strain_velocity.data();
-            const std::vector<double>* va = accel.data();
-            std::size_t at = s.node[c];
-            if constexpr (kContact) {
-              if (const std::int32_t k = cf.shared[at]; k >= 0) {
-                vx = body_position_velocity.data();
-                ve = body_strain_velocity.data();
-                va = body_accel.data();
-                at = cf.at(k, body_index);
-              }
-            }
-            for (int i = 0; i < 3; ++i) {
-              dx[i] += s.weight[c] * vx[i][at];
-              if (!musl) dv[i] += s.weight[c] * va[i][at];
-              for (int j = 0; j < 3; ++j) l(i, j) += ve[i][at] * s.gradient[c][j];
-            }
-          }
-          for (int i = 0; i < 3; ++i) {
-            if (active[i]) ps.position[i][p] += dx[i] * dt;  // (2-16)
-            if (!musl) ps.velocity[i][p] += dv[i] * dt;      // (2-15), USL
-          }
-          StrainStep step;
-          step.strain_increment = 0.5 * (l + l.transpose()) * dt;  // (2-18)
-          const Tensor3 spin = 0.5 * (l - l.transpose()) * dt;     // (2-19)
-          const double volumetric = step.strain_increment.trace();
-          if (!(1.0 + volumetric > 0.0)) {
-            leaving_[p] = 1;
-            return 1;
-          }
-          for (int i = 0; i < 3; ++i)  // F_ii, the cpGIMP domain stretch
-            ps.stretch[i][p] *= 1.0 + step.strain_increment(i, i);
-          step.dt = dt;
-          step.density_old = ps.density[p];
-          step.density_new = ps.density[p] / (1.0 + volumetric);  // (2-20)
-          step.bulk_viscosity = viscosity_(volumetric / dt, step.density_new, ps.sound_speed[p]);
-          step.burn_fraction = mpm::burn_fraction(t1, ps.lighting_time[p], body.burn_rate);
-          // (2-21): the Jaumann rotation of the deviator, sigma_ik dW_jk + sigma_jk dW_ik;
-          // the isotropic part of sigma is unchanged by it.
-          Tensor3 dev = ps.deviator(p);
-          dev += dev * spin.transpose() + spin * dev;
-          MaterialPoint point = ps.material_point(p, dev);
-          models_[ps.material[p]]->update(step, point);
-          ps.set_deviator(p, dev);
-          ps.density[p] = step.density_new;
-          ps.bulk_viscosity[p] = step.bulk_viscosity;
-          return 0;
-        });
-      });
-  if (collapsed > 0) {
-    const auto p = static_cast<std::size_t>(
-        std::find(leaving_.begin(), leaving_.end(), std::uint8_t{1}) - leaving_.begin());
-    char text[512];
-    std::snprintf(text, sizeof text,
-                  "mpm: %zu particle(s) collapsed (1 + tr(d eps) <= 0) in the step to t = %.6g s "
-                  "(step %lld), the first particle %zu (body '%s') at (%.6g, %.6g, %.6g) m, "
-                  "density %.6g kg/m^3 and pressure %.6g Pa at the step's start; lower time.cfl",
-                  collapsed, t1, static_cast<long long>(steps_ + 1), p,
-                  bodies_[ps.body[p]].name.c_str(), ps.position[0][p], ps.position[1][p],
-                  ps.position[2][p], ps.density[p], ps.pressure[p]);
-    throw Error(text);
-  }
+  dispatch_kernel(settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
+                  [&](auto width, auto mask, auto with_contact) {
+                    using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+                    constexpr bool kContact = decltype(with_contact)::value;
+                    collapsed = parallel_sum(ps.size(), [&](std::size_t p) -> std::size_t {
+                      const int body_index = ps.body[p];
+                      // A fixed particle set stays where it is, at rest, unstrained.
+                      if (has_fixed_ && body_fixed_[static_cast<std::size_t>(body_index)] != 0)
+                        return 0;
+                      const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+                      S s;
+                      double half_width[3];
+                      particle_half_width(p, half_width);
+                      compute_stencil(x, half_width, geometry_, grid_, s);
+                      double dx[3] = {0.0, 0.0, 0.0};
+                      double dv[3] = {0.0, 0.0, 0.0};
+                      Tensor3 l = Tensor3::Zero();  // velocity gradient sum_I v_iI N_I,j
+                      for (int c = 0; c < S::kCount; ++c) {
+                        const std::vector<double>* vx = position_velocity.data();
+                        const std::vector<double>* ve = strain_velocity.data();
+                        const std::vector<double>* va = accel.data();
+                        std::size_t at = s.node[c];
+                        if constexpr (kContact) {
+                          if (const std::int32_t k = cf.shared[at]; k >= 0) {
+                            vx = body_position_velocity.data();
+                            ve = body_strain_velocity.data();
+                            va = body_accel.data();
+                            at = cf.at(k, body_index);
+                          }
+                        }
+                        for (int i = 0; i < 3; ++i) {
+                          dx[i] += s.weight[c] * vx[i][at];
+                          if (usl) dv[i] += s.weight[c] * va[i][at];
+                          for (int j = 0; j < 3; ++j) l(i, j) += ve[i][at] * s.gradient[c][j];
+                        }
+                      }
+                      for (int i = 0; i < 3; ++i) {
+                        if (active[i]) ps.position[i][p] += dx[i] * dt;  // (2-16)
+                        if (usl) ps.velocity[i][p] += dv[i] * dt;        // (2-15), USL
+                      }
+                      if (strain_particle(p, l, strain_dt, t1)) return 0;
+                      leaving_[p] = 1;
+                      return 1;
+                    });
+                  });
+  if (collapsed > 0) throw_collapsed(collapsed, t1);
+}
+
+bool MpmSolver::strain_particle(std::size_t p, const Tensor3& l, double dt, double t1) {
+  auto& ps = particles_;
+  StrainStep step;
+  step.strain_increment = 0.5 * (l + l.transpose()) * dt;  // (2-18)
+  const Tensor3 spin = 0.5 * (l - l.transpose()) * dt;     // (2-19)
+  const double volumetric = step.strain_increment.trace();
+  if (!(1.0 + volumetric > 0.0)) return false;
+  for (int i = 0; i < 3; ++i)  // F_ii, the cpGIMP domain stretch
+    ps.stretch[i][p] *= 1.0 + step.strain_increment(i, i);
+  step.dt = dt;
+  step.density_old = ps.density[p];
+  step.density_new = ps.density[p] / (1.0 + volumetric);  // (2-20)
+  step.bulk_viscosity = viscosity_(volumetric / dt, step.density_new, ps.sound_speed[p]);
+  step.burn_fraction = mpm::burn_fraction(t1, ps.lighting_time[p], bodies_[ps.body[p]].burn_rate);
+  // (2-21): the Jaumann rotation of the deviator, sigma_ik dW_jk + sigma_jk dW_ik;
+  // the isotropic part of sigma is unchanged by it.
+  Tensor3 dev = ps.deviator(p);
+  dev += dev * spin.transpose() + spin * dev;
+  MaterialPoint point = ps.material_point(p, dev);
+  models_[ps.material[p]]->update(step, point);
+  ps.set_deviator(p, dev);
+  ps.density[p] = step.density_new;
+  ps.bulk_viscosity[p] = step.bulk_viscosity;
+  return true;
+}
+
+void MpmSolver::throw_collapsed(std::size_t count, double t1) const {
+  const auto& ps = particles_;
+  const auto p = static_cast<std::size_t>(
+      std::find(leaving_.begin(), leaving_.end(), std::uint8_t{1}) - leaving_.begin());
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "mpm: %zu particle(s) collapsed (1 + tr(d eps) <= 0) in the step to t = %.6g s "
+                "(step %lld), the first particle %zu (body '%s') at (%.6g, %.6g, %.6g) m, "
+                "density %.6g kg/m^3 and pressure %.6g Pa at the step's start; lower time.cfl",
+                count, t1, static_cast<long long>(steps_ + 1), p, bodies_[ps.body[p]].name.c_str(),
+                ps.position[0][p], ps.position[1][p], ps.position[2][p], ps.density[p],
+                ps.pressure[p]);
+  throw Error(text);
 }
 
 void MpmSolver::remove_outflow() {

@@ -27,6 +27,12 @@
 // and 3: after (2-9)-(2-12) have mapped the particles, before (2-13). Without
 // them a step is the standalone step, bit for bit.
 //
+// USAVG (Nairn 2003; Wallstedt & Guilkey 2008) adds, after step 2,
+// strain_from_start_velocities(): half the strain increment from v_I^n = p_I / m_I,
+// dt / 2, then step 2 again for the forces of the half-updated stress; step 6
+// then strains with the other half, from the step-5 velocities. The pressure work
+// is then sigma^{n+1/2} : (v^n + v^{n+1}) / 2, what the kinetic energy gained.
+//
 // USL skips steps 4 and 5 and does (2-15) in step 6. All weights are N^n (the
 // particles' positions at the start of the step). Nothing is allocated inside a
 // step once the grid's arrays have reached their largest size.
@@ -72,6 +78,19 @@ struct MpmSettings {
       break;
   }
   return "linear";
+}
+
+/// The scene-file name of an update scheme: "musl", "usl", "usavg".
+[[nodiscard]] inline const char* update_name(config::MpmUpdate u) {
+  switch (u) {
+    case config::MpmUpdate::usl:
+      return "usl";
+    case config::MpmUpdate::usavg:
+      return "usavg";
+    case config::MpmUpdate::musl:
+      break;
+  }
+  return "musl";
 }
 
 /// What the domain holds: mass, momentum, kinetic and internal energy.
@@ -199,7 +218,15 @@ class MpmSolver {
   void apply_node_constraints(double dt);
   void apply_face_conditions_to_remap();
   void update_and_remap_velocities(double dt);
+  /// USAVG's first half: strain, density and stress with dt / 2 from v_I^n.
+  void strain_from_start_velocities(double dt);
   void update_particles(double dt);
+  /// Strain increment (2-18), spin (2-19), density (2-20), bulk viscosity and the
+  /// constitutive model (2-21) of particle p over `dt` from its velocity gradient
+  /// `l`, the burn at `t1`. False (nothing changed) if the particle collapses.
+  bool strain_particle(std::size_t p, const Tensor3& l, double dt, double t1);
+  /// Throws mpfd::Error naming the first particle leaving_ marks as collapsed.
+  [[noreturn]] void throw_collapsed(std::size_t count, double t1) const;
   void remove_outflow();
   /// The step limit from every particle; throws (throw_unphysical) if one is unphysical.
   void compute_stable_dt();

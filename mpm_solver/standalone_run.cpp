@@ -133,8 +133,7 @@ void run_standalone(const config::Scene& scene, const RunOptions& options) {
     summary.set_detail("particles_removed", ledger.particles_removed);
     summary.set_detail("grid_nodes_allocated", solver.sparse_grid().node_count());
     summary.set_detail("shape_function", shape_function_name(solver.settings().shape_function));
-    summary.set_detail("update",
-                       solver.settings().update == config::MpmUpdate::musl ? "musl" : "usl");
+    summary.set_detail("update", update_name(solver.settings().update));
     summary.set_detail("peak_memory_bytes", io::peak_memory_bytes());
     summary.set_detail("solver_time_s", solver_seconds);
     summary.set_detail("particle_updates", solver.particle_updates());

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   double cfl = config::kMpmDefaultCfl, c0 = 1.5, c1 = 0.06;
   app.add_option("--problem", name, "a name of hard_riemann_problems()")->capture_default_str();
   app.add_option("--shape", shape, "linear or gimp")->capture_default_str();
-  app.add_option("--update", update, "musl or usl")->capture_default_str();
+  app.add_option("--update", update, "musl, usl or usavg")->capture_default_str();
   app.add_option("--cells", cells, "cells per metre")->capture_default_str();
   app.add_option("--cfl", cfl, "Courant number")->capture_default_str();
   app.add_option("--c0", c0, "quadratic bulk-viscosity coefficient")->capture_default_str();
@@ -52,7 +52,9 @@ int main(int argc, char** argv) {
   settings.cfl = cfl;
   settings.bulk_viscosity_quadratic = c0;
   settings.bulk_viscosity_linear = c1;
-  settings.update = update == "usl" ? config::MpmUpdate::usl : config::MpmUpdate::musl;
+  settings.update = update == "usl"     ? config::MpmUpdate::usl
+                    : update == "usavg" ? config::MpmUpdate::usavg
+                                        : config::MpmUpdate::musl;
   try {
     mpm::MpmSolver mpm(scene, settings);
     const auto energy = [&] {

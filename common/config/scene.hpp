@@ -173,7 +173,7 @@ struct Output {
 
 enum class Method { fdm, mpm, cfdmp, afdmp };
 enum class ShapeFunction { linear, gimp, cpgimp };
-enum class MpmUpdate { musl, usl };
+enum class MpmUpdate { musl, usl, usavg };
 
 struct FdmOptions {
   double artificial_viscosity =

@@ -200,6 +200,16 @@ void check_mpm_only(const Scene& s, Diagnostics& d) {
             "full pressure), got " +
                 num(s.solver.mpm.reference_pressure));
   }
+  // usavg's first half-strain uses the summed nodal v^n: per-body contact fields
+  // and a coupler's node loads and injected particles are not in it.
+  if (s.solver.mpm.update == MpmUpdate::usavg && s.solver.method != Method::mpm)
+    d.error("solver.mpm.update",
+            "usavg is for solver.method mpm only (the coupler's node loads are not in its "
+            "first half-strain); expected musl or usl with a coupled method");
+  if (s.solver.mpm.update == MpmUpdate::usavg && s.solver.mpm.contact)
+    d.error("solver.mpm.update",
+            "usavg is not supported with solver.mpm.contact yet; expected musl or usl, or "
+            "remove solver.mpm.contact");
   if (s.solver.mpm.contact && s.solver.mpm.contact->normal_body) {
     const std::string& name = *s.solver.mpm.contact->normal_body;
     std::vector<std::string> names;

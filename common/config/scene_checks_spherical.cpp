@@ -26,6 +26,9 @@ void check_line(const Scene& s, Diagnostics& d) {
   if (d.clean("solver") && s.solver.mpm.shape_function == ShapeFunction::cpgimp)
     d.error("solver.mpm.shape_function",
             "expected linear or gimp with geometry spherical (the radial grid has no cpgimp)");
+  if (d.clean("solver") && s.solver.mpm.update == MpmUpdate::usavg)
+    d.error("solver.mpm.update",
+            "expected musl with geometry spherical (the 1D spherical MPM has no usavg yet)");
   if (!d.clean("boundaries")) return;
   if (s.boundaries[Face::x_lower] != BoundaryKind::symmetry)
     d.error("boundaries.x_lower",

@@ -236,9 +236,16 @@ std::shared_ptr<const Table<Solver>> solver_table() {
          "linear: trilinear, T (2-7); gimp: uGIMP, W §2.3 (particle domains of constant size); "
          "cpgimp: W §2.3's cpGIMP (domains stretched by the diagonal of the deformation "
          "gradient)")
-      .optional("update", &MpmOptions::update,
-                Enum<MpmUpdate>({{"musl", MpmUpdate::musl}, {"usl", MpmUpdate::usl}}),
-                "musl re-maps particle velocities to the nodes before the strain update, T (2-17)")
+      .optional(
+          "update", &MpmOptions::update,
+          Enum<MpmUpdate>(
+              {{"musl", MpmUpdate::musl}, {"usl", MpmUpdate::usl}, {"usavg", MpmUpdate::usavg}}),
+          "musl re-maps particle velocities to the nodes before the strain update, T "
+          "(2-17); usl strains with the nodal v^{n+1}; usavg (Nairn 2003, CMES 4(6); "
+          "Wallstedt & Guilkey 2008) strains half with the nodal v^n before the forces "
+          "and half with the re-mapped v^{n+1} after, so that the pressure work matches "
+          "the kinetic energy gained (strong shocks into cold gas, docs/stability.md); "
+          "only with solver.method mpm and without solver.mpm.contact")
       .optional("bulk_viscosity_quadratic", &MpmOptions::bulk_viscosity_quadratic,
                 Number("-", Range::at_least(0)),
                 "c0 of the artificial bulk viscosity q = rho l (c0 l d^2 - c1 c d) in compression "

@@ -69,6 +69,17 @@ TEST(SceneChecks, Reference_pressure_is_mpm_and_afdmp_only) {
   EXPECT_NO_THROW(parse_scene(kBlast + "solver: {method: mpm, " + options, "scene.yaml"));
 }
 
+TEST(SceneChecks, Usavg_is_mpm_only_and_not_with_contact) {
+  EXPECT_THAT(
+      errors_of(kBlast + "solver: {method: fdm, mpm: {update: usavg}}\n"),
+      ElementsAre(::testing::HasSubstr("solver.mpm.update: usavg is for solver.method mpm only")));
+  EXPECT_THAT(errors_of(kBlast + "solver: {method: mpm, mpm: {update: usavg, contact: {}}}\n"),
+              ElementsAre(::testing::HasSubstr(
+                  "solver.mpm.update: usavg is not supported with solver.mpm.contact yet")));
+  const Scene s = parse_scene(kBlast + "solver: {method: mpm, mpm: {update: usavg}}\n", "s.yaml");
+  EXPECT_EQ(s.solver.mpm.update, MpmUpdate::usavg);
+}
+
 TEST(SceneChecks, Charge_material_must_be_an_explosive) {
   EXPECT_THAT(errors_of(kBlast + "charges:\n  - {name: c, material: air, " + kBall +
                         ", detonation_point: [0.5, 0.5, 0]}\n"),

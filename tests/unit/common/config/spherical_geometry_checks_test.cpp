@@ -65,6 +65,8 @@ TEST(SphericalGeometryChecks, Is_one_radial_line_from_the_centre_run_by_mpm) {
              "domain.geometry", "spherical is run by mpm_solver run; expected solver.method mpm");
   expect_one(scene(kCharge, "solver: {method: mpm, mpm: {shape_function: cpgimp}}\n"),
              "solver.mpm.shape_function", "expected linear or gimp with geometry spherical");
+  expect_one(scene(kCharge, "solver: {method: mpm, mpm: {update: usavg}}\n"), "solver.mpm.update",
+             "expected musl with geometry spherical");
 }
 
 TEST(SphericalGeometryChecks, Faces_are_the_centre_and_a_free_or_transmitting_surface) {
