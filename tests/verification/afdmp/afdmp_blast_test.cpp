@@ -19,26 +19,12 @@
 #include "coupler/run/launch.hpp"
 #include "mpm_solver/standalone_run.hpp"
 #include "tests/verification/afdmp/v3_interface.hpp"
+#include "tests/verification/support/scene_text.hpp"
 
 namespace mpfd::verification {
 namespace {
 
 const std::string kScene = std::string(MPFD_SOURCE_DIR) + "/configs/afdmp_blast_2d.yaml";
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// `text` with the one occurrence of `from` replaced by `to`.
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
 
 std::filesystem::path fresh(const std::string& name) {
   const auto path = std::filesystem::temp_directory_path() / ("mpfd-afdmp-v3-" + name);

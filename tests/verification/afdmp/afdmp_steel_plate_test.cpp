@@ -33,6 +33,7 @@
 #include "mpm_solver/mpm_solver.hpp"
 #include "tests/verification/afdmp/oscillation.hpp"
 #include "tests/verification/afdmp/run_reading.hpp"
+#include "tests/verification/support/scene_text.hpp"
 
 namespace mpfd::verification {
 namespace {
@@ -46,21 +47,6 @@ constexpr double kThicknessPeriod = 2 * 0.020 / 5890;  // [s]
 constexpr double kPlateDensity = 1000;  // [kg/m^3]: steel 7890, air and products far below
 // T Table 3.1 E0 times half the r = 50 mm, 1 mm thick cylinder.
 const double kChargeEnergy = 6.993e9 * 0.5 * std::numbers::pi * 0.05 * 0.05 * 0.001;
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// `text` with the one occurrence of `from` replaced by `to`.
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
 
 /// `text` without the line that starts with `start`.
 std::string without_line(std::string text, const std::string& start) {

@@ -12,22 +12,6 @@
 
 namespace mpfd::verification {
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  if (at == std::string::npos)
-    ADD_FAILURE() << "scene lacks " << from;
-  else
-    text.replace(at, from.size(), to);
-  return text;
-}
-
 std::vector<Station> read_stations(const std::filesystem::path& gauges_h5,
                                    const config::Scene& scene, double mass, const std::string& name,
                                    bool radial) {

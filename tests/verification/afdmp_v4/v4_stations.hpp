@@ -9,6 +9,7 @@
 
 #include "common/config/scene.hpp"
 #include "tests/verification/support/kingery_bulmash.hpp"
+#include "tests/verification/support/scene_text.hpp"
 
 namespace mpfd::verification {
 
@@ -19,11 +20,6 @@ struct Station {
   double arrival = 0;   ///< s
   FreeAirBlast kb{};    ///< zero for Z < 0.5
 };
-
-std::string read_text(const std::filesystem::path& file);
-
-/// `text` with its one `from` replaced by `to` (a test failure if absent).
-std::string replaced(std::string text, const std::string& from, const std::string& to);
 
 /// Every gauge of `scene` read from `gauges_h5` (charge at the origin: R =
 /// |position|; with `radial`, R = position x, as a 1D spherical scene's), against

@@ -27,9 +27,13 @@
 #include "common/io/hdf5_file.hpp"
 #include "coupler/run/launch.hpp"
 #include "fdm_solver/standalone_run.hpp"
+#include "tests/verification/support/scene_text.hpp"
 
 namespace mpfd::coupler {
 namespace {
+
+using verification::read_text;
+using verification::replaced_all;
 
 const std::string kConfigs = std::string(MPFD_SOURCE_DIR) + "/configs/";
 
@@ -37,13 +41,6 @@ std::filesystem::path temp_path(const std::string& name) {
   const auto path = std::filesystem::temp_directory_path() / ("mpfd-cfdmp-blast-" + name);
   std::filesystem::remove_all(path);
   return path;
-}
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 struct GaugeReading {
@@ -65,15 +62,6 @@ GaugeReading read_gauge(const std::filesystem::path& dir, const std::string& gau
       break;
     }
   return r;
-}
-
-/// `text` with every `from` replaced by `to` (at least one).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  for (; at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
 }
 
 struct Comparison {
@@ -124,8 +112,8 @@ double relative(double a, double b) {
 }
 
 TEST(CfdmpBlast, Fast_gas_charge_gauges_agree_across_the_zone_face) {
-  const auto yaml = replaced(read_text(kConfigs + "cfdmp_blast_2d_coarse.yaml"),
-                             "    material: tnt\n", "    material: air\n");
+  const auto yaml = replaced_all(read_text(kConfigs + "cfdmp_blast_2d_coarse.yaml"),
+                                 "    material: tnt\n", "    material: air\n");
   const auto c = run_both("gas", yaml);
   // Measured: p1 54.44 / p2 52.54 MPa (-3.5 %), arrival 17.68 / 18.07 us
   // (0.39 us; h / U = 1.19 us); pure FDM at p2 54.21 MPa (CFDMP -3.1 %), 17.68 us.
@@ -154,8 +142,8 @@ TEST(CfdmpBlast, Fast_tnt_charge_gauges_agree_across_the_zone_face) {
 }
 
 TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_within_15_percent_thesis_5_open) {
-  const auto yaml = replaced(read_text(kConfigs + "cfdmp_blast_2d.yaml"), "    material: tnt\n",
-                             "    material: air\n");
+  const auto yaml = replaced_all(read_text(kConfigs + "cfdmp_blast_2d.yaml"), "    material: tnt\n",
+                                 "    material: air\n");
   const auto c = run_both("full-gas", yaml);
   // Measured (h = 2 mm, 12 s): p1 52.86 / p2 48.10 MPa (-9.0 %), arrival
   // 17.05 / 17.16 us (0.11 us; h / U = 0.45 us); pure FDM at p2 53.05 MPa. The
