@@ -126,7 +126,14 @@ void Hub::wait_into_pending(std::chrono::milliseconds budget) {
       poll_into_pending(std::chrono::milliseconds{0});
       return;
     }
-    watch_();
+    try {
+      watch_();
+    } catch (const Error&) {
+      // A solver that sent its fatal Error and exited can be seen ended before the
+      // message is read: read what it left first, its own error names the cause.
+      poll_into_pending(std::chrono::milliseconds{100});
+      throw;
+    }
     if (remaining(deadline).count() == 0) return;
   }
 }
@@ -186,6 +193,8 @@ std::vector<Message> Hub::gather(std::span<const std::string> peers) {
 
 std::vector<v1::Hello> Hub::accept(std::span<const std::string> peers, std::string_view run_id) {
   run_id_ = std::string(run_id);
+  fatal_peers_.clear();  // a new session: nobody has failed or been shut down yet
+  shut_down_peers_.clear();
   std::vector<v1::Hello> hellos;
   for (const auto& peer : peers) {
     Message message = receive_from(peer);

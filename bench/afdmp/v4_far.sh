@@ -7,7 +7,7 @@
 #                 1D start to 0.2 m, then the FDM on [0, 1.25]^3 m)
 # Usage: bench/afdmp/v4_far.sh OUT_DIR [CELLS ...]   (default 50 80 125, i.e.
 #   h = 25, 15.625, 10 mm; measured 16 s / 2 min / 17 min on 2 shared cores,
-#   0.26 / 0.91 / 3.3 GB). Env: COUPLER, MPM_SOLVER (default build/...),
+#   0.26 / 0.91 / 4.3 GB). Env: COUPLER, MPM_SOLVER (default build/...),
 #   FDM_AV (solver.fdm.artificial_viscosity for the octants; default the
 #   scene's, i.e. the solver default 1), CFL (time.cfl; default the scene's 0.3),
 #   SKIP_1D=1 (reuse OUT_DIR/1d_reference).

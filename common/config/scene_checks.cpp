@@ -204,8 +204,8 @@ void check_mpm_only(const Scene& s, Diagnostics& d) {
   // and a coupler's node loads and injected particles are not in it.
   if (s.solver.mpm.update == MpmUpdate::usavg && s.solver.method != Method::mpm)
     d.error("solver.mpm.update",
-            "usavg is for solver.method mpm only (the coupler's node loads are not in its "
-            "first half-strain); expected musl or usl with a coupled method");
+            "usavg is for solver.method mpm only (fdm runs no MPM; under cfdmp and afdmp the "
+            "coupler's node loads are not in its first half-strain); expected musl or usl");
   if (s.solver.mpm.update == MpmUpdate::usavg && s.solver.mpm.contact)
     d.error("solver.mpm.update",
             "usavg is not supported with solver.mpm.contact yet; expected musl or usl, or "
