@@ -4,8 +4,8 @@
 // exact solution within 1.3 x the L1 measured at 200 cells, keeps the energy
 // to the stated bound where MUSL loses 0.5 % (GIMP) and 1.7 % (linear), and
 // with GIMP its error falls from 200 to 400 cells. The acoustic pulse between
-// walls, 600-1200 steps, and an elastic bar over 20 periods show the two-half step stays bounded (the
-// one-step average it replaces grew there).
+// walls, 600-1200 steps, and an elastic bar over 20 periods show the two-half step stays bounded
+// (the one-step average it replaces grew there).
 #include <gtest/gtest.h>
 
 #include <algorithm>
