@@ -1,5 +1,6 @@
 #include "coupler/handshake/ghost_cells.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "common/core/error.hpp"
@@ -86,7 +87,10 @@ std::optional<std::size_t> fill_ghost_cells(const GhostSource<Dim>& source,
       mass += weight * source.node_mass[node];          // T (4-1)
       momentum += weight * source.node_momentum[node];  // T (4-2)
     }
-    if (!(mass > 0)) return 1;
+    if (!(mass > 0)) {
+      ghost.rho[c] = 0;  // marks the cell for the search below
+      return 1;
+    }
     const double volume = support[c] * cell_volume;  // the corner nodes' volume in the domain
     ghost.rho[c] = mass / volume;                    // T (4-4)
     ghost.momentum[c] = momentum / volume;           // T (4-5): ρ_c p_c / m_c
@@ -95,13 +99,10 @@ std::optional<std::size_t> fill_ghost_cells(const GhostSource<Dim>& source,
     return 0;
   });
   if (bad == 0) return std::nullopt;
-  for (std::size_t c = 0; c < n; ++c) {
-    double mass = 0;
-    for (int q = 0; q < kCorners<Dim>; ++q)
-      mass += source.node_mass[corners[c * kCorners<Dim> + q]];
-    if (!(mass > 0)) return c;
-  }
-  return std::nullopt;  // unreachable: `bad` counted a cell without mass
+  // A filled cell has rho > 0 (mass and volume > 0): the first cell without is the one to name.
+  const auto first =
+      std::find_if(ghost.rho.begin(), ghost.rho.end(), [](double rho) { return !(rho > 0); });
+  return static_cast<std::size_t>(first - ghost.rho.begin());
 }
 
 #define MPFD_INSTANTIATE_GHOST(Dim)                                                                \
