@@ -29,9 +29,10 @@ ConstitutiveModel& MpmSolver::model_for(std::size_t material) {
   return *models_[material];
 }
 
-void MpmSolver::refuse_coupling_with_contact(const char* what) const {
-  // Contact keeps per-body nodal fields sized for the scene's bodies, and a
-  // coupler's loads act on the summed field only: both would be wrong.
+void MpmSolver::refuse_unsupported_coupling(const char* what) const {
+  // USAVG's first half-strain is taken before the coupler's loads reach the nodes;
+  // contact keeps per-body nodal fields, and a coupler's loads act on the summed
+  // field only: both would be wrong.
   if (settings_.update == config::MpmUpdate::usavg)
     throw Error(std::string("mpm: ") + what +
                 " from a coupler with solver.mpm.update usavg is not supported (its first "
@@ -61,7 +62,7 @@ std::uint16_t MpmSolver::injected_body(std::size_t material) {
 }
 
 void MpmSolver::inject_particles(const ParticleBatch& batch) {
-  refuse_coupling_with_contact("particle injection");
+  refuse_unsupported_coupling("particle injection");
   const std::size_t n = batch.size();
   const bool with_stress = !batch.stress.empty();
   const auto& g = grid();
@@ -260,7 +261,7 @@ void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::In
 }
 
 void MpmSolver::queue_node_load(const NodeLoad& load) {
-  refuse_coupling_with_contact("a node load");
+  refuse_unsupported_coupling("a node load");
   const auto& g = grid();
   for (int a = 0; a < 3; ++a) {
     const int last = g.is_active(a) ? g.cells()[a] : 0;

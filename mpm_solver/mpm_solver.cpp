@@ -924,13 +924,13 @@ void MpmSolver::throw_collapsed(std::size_t count, double t1) const {
   const auto p = static_cast<std::size_t>(
       std::find(leaving_.begin(), leaving_.end(), std::uint8_t{1}) - leaving_.begin());
   char text[512];
-  std::snprintf(text, sizeof text,
-                "mpm: %zu particle(s) collapsed (1 + tr(d eps) <= 0) in the step to t = %.6g s "
-                "(step %lld), the first particle %zu (body '%s') at (%.6g, %.6g, %.6g) m, "
-                "density %.6g kg/m^3 and pressure %.6g Pa at the step's start; lower time.cfl",
-                count, t1, static_cast<long long>(steps_ + 1), p, bodies_[ps.body[p]].name.c_str(),
-                ps.position[0][p], ps.position[1][p], ps.position[2][p], ps.density[p],
-                ps.pressure[p]);
+  std::snprintf(
+      text, sizeof text,
+      "mpm: %zu particle(s) collapsed (1 + tr(d eps) <= 0) in the step to t = %.6g s "
+      "(step %lld), the first particle %zu (body '%s') at (%.6g, %.6g, %.6g) m, "
+      "density %.6g kg/m^3 and pressure %.6g Pa before this strain update; lower time.cfl",
+      count, t1, static_cast<long long>(steps_ + 1), p, bodies_[ps.body[p]].name.c_str(),
+      ps.position[0][p], ps.position[1][p], ps.position[2][p], ps.density[p], ps.pressure[p]);
   throw Error(text);
 }
 

@@ -239,8 +239,9 @@ class MpmSolver {
   ConstitutiveModel& model_for(std::size_t material);
   /// The body injected particles of `material` join, made on first use.
   std::uint16_t injected_body(std::size_t material);
-  /// Throws mpfd::Error naming `what` when the zone has contact (not supported with a coupler).
-  void refuse_coupling_with_contact(const char* what) const;
+  /// Throws mpfd::Error naming `what` when the zone has contact or runs USAVG (neither
+  /// supports a coupler's loads yet).
+  void refuse_unsupported_coupling(const char* what) const;
   void apply_node_loads();
   template <class Fn>
   void for_each_face_node(const Fn& fn) const;

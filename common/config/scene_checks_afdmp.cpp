@@ -204,7 +204,7 @@ void check_afdmp(const Scene& s, Diagnostics& d) {
     if (s.solver.mpm.contact)
       d.error("solver.mpm.contact",
               "not with an FSI zone under afdmp: the MPM refuses coupler particles with "
-              "contact (MpmSolver::refuse_coupling_with_contact)");
+              "contact (MpmSolver::refuse_unsupported_coupling)");
   }
   check_regions(s, d);
   if (s.solver.afdmp.start == AfdmpStart::spherical) check_spherical_start(s, d);
