@@ -19,8 +19,31 @@
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
 #include "mpm_solver/mpm_solver.hpp"
+#include "tests/stability/mpm_tube.hpp"
 #include "tests/stability/stability_cases.hpp"
 #include "tests/verification/support/exact_riemann.hpp"
+
+namespace {
+
+/// The particles in [0, 1] m with the exact solution beside them, as CSV.
+void write_profile(const std::string& path, const mpfd::mpm::ParticleSet& ps,
+                   const mpfd::stability::RiemannProblem& problem) {
+  std::ofstream csv(path);
+  if (!csv) throw mpfd::Error("cannot write the profile '" + path + "'");
+  const mpfd::verification::ExactRiemann exact(problem.left, problem.right, problem.gamma);
+  csv << "x,rho,u,p,e,q,mass,exact_rho,exact_u,exact_p\n";
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    const double x = ps.position[0][p];
+    if (x < 0.0 || x > 1.0) continue;
+    const auto ex = exact.sample((x - 0.5) / problem.end);
+    csv << x << ',' << ps.density[p] << ',' << ps.velocity[0][p] << ',' << ps.pressure[p] << ','
+        << ps.specific_internal_energy[p] << ',' << ps.bulk_viscosity[p] << ',' << ps.mass[p] << ','
+        << ex.density << ',' << ex.velocity << ',' << ex.pressure << '\n';
+  }
+  if (!csv.flush()) throw mpfd::Error("writing the profile '" + path + "' failed");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace mpfd;
@@ -30,22 +53,25 @@ int main(int argc, char** argv) {
   int cells = 200;
   double cfl = config::kMpmDefaultCfl, c0 = 1.5, c1 = 0.06;
   app.add_option("--problem", name, "a name of hard_riemann_problems()")->capture_default_str();
-  app.add_option("--shape", shape, "linear or gimp")->capture_default_str();
-  app.add_option("--update", update, "musl, usl or usavg")->capture_default_str();
+  app.add_option("--shape", shape, "linear or gimp")
+      ->check(CLI::IsMember({"linear", "gimp"}))
+      ->capture_default_str();
+  app.add_option("--update", update, "musl, usl or usavg")
+      ->check(CLI::IsMember({"musl", "usl", "usavg"}))
+      ->capture_default_str();
   app.add_option("--cells", cells, "cells per metre")->capture_default_str();
   app.add_option("--cfl", cfl, "Courant number")->capture_default_str();
   app.add_option("--c0", c0, "quadratic bulk-viscosity coefficient")->capture_default_str();
   app.add_option("--c1", c1, "linear bulk-viscosity coefficient")->capture_default_str();
   app.add_option("--out", out, "CSV of the particles in [0, 1] m");
   CLI11_PARSE(app, argc, argv);
-  const auto problems = hard_riemann_problems();
-  const auto found = std::find_if(problems.begin(), problems.end(),
-                                  [&](const RiemannProblem& p) { return p.name == name; });
-  if (found == problems.end()) {
-    std::fprintf(stderr, "no hard Riemann problem '%s'\n", name.c_str());
+  RiemannProblem problem;
+  try {
+    problem = hard_riemann_problem(name);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  const RiemannProblem& problem = *found;
   const Solver solver = shape == "gimp" ? Solver::mpm_gimp : Solver::mpm_linear;
   const auto scene = config::parse_scene(tube_scene(problem, cells, solver, cfl), "probe.yaml");
   auto settings = mpm::MpmSettings::from_scene(scene);
@@ -57,37 +83,14 @@ int main(int argc, char** argv) {
                                         : config::MpmUpdate::musl;
   try {
     mpm::MpmSolver mpm(scene, settings);
-    const auto energy = [&] {
-      const auto t = mpm.totals();
-      return t.kinetic_energy + t.internal_energy + mpm.boundary_ledger().energy;
-    };
-    const double e0 = energy();
+    const double e0 = audited_energy(mpm);
     mpm.advance_to(problem.end);
-    const double e1 = energy();
-    const verification::ExactRiemann exact(problem.left, problem.right, problem.gamma);
+    const double e1 = audited_energy(mpm);
     const auto& ps = mpm.particles();
-    std::ofstream csv;
-    if (!out.empty()) {
-      csv.open(out);
-      csv << "x,rho,u,p,e,q,mass,exact_rho,exact_u,exact_p\n";
-    }
-    double sum = 0.0, volume = 0.0;
-    for (std::size_t p = 0; p < ps.size(); ++p) {
-      const double x = ps.position[0][p];
-      if (x < 0.0 || x > 1.0) continue;
-      const auto ex = exact.sample((x - 0.5) / problem.end);
-      const double v = ps.mass[p] / ps.density[p];
-      sum += std::abs(ps.density[p] - ex.density) * v;
-      volume += v;
-      if (csv.is_open())
-        csv << x << ',' << ps.density[p] << ',' << ps.velocity[0][p] << ',' << ps.pressure[p] << ','
-            << ps.specific_internal_energy[p] << ',' << ps.bulk_viscosity[p] << ',' << ps.mass[p]
-            << ',' << ex.density << ',' << ex.velocity << ',' << ex.pressure << '\n';
-    }
+    if (!out.empty()) write_profile(out, ps, problem);
     std::printf("%s %s %s %d cells cfl %.4g c0 %.3g c1 %.3g: %lld steps, L1 %.4f, energy %+.3e\n",
                 name.c_str(), shape.c_str(), update.c_str(), cells, cfl, c0, c1,
-                static_cast<long long>(mpm.steps()),
-                sum / volume / std::max(problem.left.density, problem.right.density),
+                static_cast<long long>(mpm.steps()), particle_l1_density(ps, problem),
                 (e1 - e0) / e0);
   } catch (const Error& e) {
     std::printf("%s %s %s %d cells cfl %.4g: stopped: %s\n", name.c_str(), shape.c_str(),
