@@ -33,6 +33,7 @@ constexpr double kSphereMass = 0.0130494;  // kg: r = 12.41 mm at 1630 kg/m^3
 struct FarRun {
   std::vector<Station> stations;  ///< the scene's order
   nlohmann::json summary;
+  double handoff_radius = 0;  ///< m, the scene's solver.afdmp.spherical.handoff_radius
 };
 
 FarRun run_far(int cells) {
@@ -54,17 +55,17 @@ FarRun run_far(int cells) {
   FarRun run;
   std::ifstream summary(dir / "out" / "summary.json");
   run.summary = nlohmann::json::parse(summary);
-  run.stations =
-      read_stations(dir / "out" / "gauges.h5", config::load_scene(scene_file), kSphereMass, name);
+  const auto scene = config::load_scene(scene_file);
+  run.stations = read_stations(dir / "out" / "gauges.h5", scene, kSphereMass, name);
+  run.handoff_radius = scene.solver.afdmp.spherical.handoff_radius.value();
   return run;
 }
 
 /// The stations the FDM carries: beyond the handoff radius (Z = 1 ... 5).
 std::vector<Station> fdm_stations(const FarRun& run) {
-  constexpr double kHandoffRadius = 0.2;  // m, the scene's
   std::vector<Station> out;
   for (const auto& s : run.stations)
-    if (s.distance > kHandoffRadius) out.push_back(s);
+    if (s.distance > run.handoff_radius) out.push_back(s);
   return out;
 }
 
