@@ -46,8 +46,10 @@ def charge_mass_of_run(run_dir, scene_file):
 
 
 def gauge_readings(run_dir, scene_file):
-    """[(name, R, peak_overpressure, arrival, ahead_drop)] of every gauge of the scene."""
+    """[(name, R, peak_overpressure, arrival, ahead_drop)] of every gauge of the scene
+    (R = |position|; in a 1D spherical scene, R = position x)."""
     scene = yaml.safe_load(open(scene_file))
+    radial = scene["domain"].get("geometry") == "spherical"
     rows = list(csv.reader(open(os.path.join(run_dir, "gauges.csv"))))
     header, data = rows[0], [[float(x) for x in r] for r in rows[1:]]
     readings = []
@@ -63,7 +65,8 @@ def gauge_readings(run_dir, scene_file):
                 arrival = t[k - 1] + (threshold - p[k - 1]) / (p[k] - p[k - 1]) * (t[k] - t[k - 1])
                 break
             ahead = min(ahead, p[k])
-        readings.append((name, math.hypot(*gauge["position"]), peak, arrival, ahead / p[0] - 1))
+        r = gauge["position"][0] if radial else math.hypot(*gauge["position"])
+        readings.append((name, r, peak, arrival, ahead / p[0] - 1))
     return readings
 
 

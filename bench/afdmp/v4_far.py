@@ -31,22 +31,7 @@ def charge_mass(scene_file):
 
 
 def rows_of_run(run_dir, scene_file):
-    scene = yaml.safe_load(open(scene_file))
-    radial = scene["domain"].get("geometry") == "spherical"
-    mass = charge_mass(scene_file)
-    w3 = mass ** (1.0 / 3.0)
-    out = []
-    positions = {g["name"]: g["position"] for g in scene["gauges"]}
-    for name, r, peak, arrival, ahead in v4_analyze.gauge_readings(run_dir, scene_file):
-        if radial:
-            r = positions[name][0]
-        z = r / w3
-        kb_peak, kb_arrival = v4_kb.overpressure(z), v4_kb.arrival_time(mass, r)
-        out.append({"gauge": name, "R_m": r, "Z": z, "peak_Pa": peak, "kb_peak_Pa": kb_peak,
-                    "peak_error": peak / kb_peak - 1, "arrival_s": arrival,
-                    "kb_arrival_s": kb_arrival, "arrival_error": arrival / kb_arrival - 1,
-                    "ahead_drop": ahead})
-    return out
+    return v4_analyze.compare(run_dir, scene_file, charge_mass(scene_file))
 
 
 def main():
