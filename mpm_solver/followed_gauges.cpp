@@ -75,7 +75,7 @@ std::uint64_t FollowedGauges::id(std::string_view name) const {
 std::size_t FollowedGauges::particle(std::string_view name, const ParticleSet& ps) {
   Binding& b = bindings_[binding(name)];
   if (b.hint < ps.size() && ps.id[b.hint] == b.id) return b.hint;
-  // Removal keeps the order, so the particle can only have moved down.
+  // Removal never moves a kept particle up (ParticleSet::remove_flagged), so look below first.
   const auto end = ps.id.begin() + static_cast<std::ptrdiff_t>(std::min(b.hint, ps.size()));
   auto at = std::find(ps.id.begin(), end, b.id);
   if (at == end) at = std::find(end, ps.id.end(), b.id);

@@ -1,20 +1,18 @@
 #include "mpm_solver/particle_set.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace mpfd::mpm {
 namespace {
 
-/// Moves the entries whose flag is 0 to the front, stride values per entry, and shrinks.
+/// Copies entry from[k] over entry to[k] (stride values each) and shrinks to `kept`.
 template <class T>
-void compact(std::vector<T>& values, std::span<const std::uint8_t> flags, std::size_t stride) {
-  std::size_t kept = 0;
-  for (std::size_t p = 0; p < flags.size(); ++p) {
-    if (flags[p] != 0) continue;
-    if (kept != p)
-      for (std::size_t k = 0; k < stride; ++k) values[kept * stride + k] = values[p * stride + k];
-    ++kept;
-  }
+void fill_holes(std::vector<T>& values, std::span<const std::size_t> to,
+                std::span<const std::size_t> from, std::size_t kept, std::size_t stride) {
+  for (std::size_t k = 0; k < to.size(); ++k)
+    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(from[k] * stride), stride,
+                values.begin() + static_cast<std::ptrdiff_t>(to[k] * stride));
   values.resize(kept * stride);
 }
 
@@ -33,13 +31,29 @@ void ParticleSet::grow(std::size_t count) {
 }
 
 std::size_t ParticleSet::remove_flagged(std::span<const std::uint8_t> flags) {
-  const std::size_t before = size();
-  for_each_double_array(
-      [&](std::vector<double>& a, std::size_t stride) { compact(a, flags, stride); });
-  compact(id, flags, 1);
-  compact(material, flags, 1);
-  compact(body, flags, 1);
-  return before - size();
+  // The removed particles' slots below the new size take the kept particles
+  // from above it, so each array moves O(removed) entries. Keeping the order
+  // moved every entry after the first removed one, and a few particles leave
+  // per step from anywhere in 10^5 or more: on V6 at h = 2 mm the MPM's advance
+  // took 24.4 s with that, 23.1 s with this.
+  const std::size_t n = flags.size();
+  const auto removed = static_cast<std::size_t>(
+      std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; }));
+  if (removed == 0) return 0;
+  const std::size_t kept = n - removed;
+  holes_.clear();
+  fillers_.clear();
+  for (std::size_t p = 0; p < kept; ++p)
+    if (flags[p] != 0) holes_.push_back(p);
+  for (std::size_t p = kept; p < n; ++p)
+    if (flags[p] == 0) fillers_.push_back(p);
+  for_each_double_array([&](std::vector<double>& a, std::size_t stride) {
+    fill_holes(a, holes_, fillers_, kept, stride);
+  });
+  fill_holes(id, holes_, fillers_, kept, 1);
+  fill_holes(material, holes_, fillers_, kept, 1);
+  fill_holes(body, holes_, fillers_, kept, 1);
+  return removed;
 }
 
 Tensor3 ParticleSet::deviator(std::size_t p) const {

@@ -54,7 +54,9 @@ struct ParticleSet {
   /// Appends `count` particles with every quantity zero (lighting time -inf).
   void grow(std::size_t count);
 
-  /// Keeps only the particles whose flag is 0, in their order. Returns how many were removed.
+  /// Keeps only the particles whose flag is 0. A removed particle's slot below the
+  /// new size takes a kept particle from above it (lowest slot, lowest particle
+  /// first), so a kept particle's index never grows. Returns how many were removed.
   std::size_t remove_flagged(std::span<const std::uint8_t> flags);
 
   /// The deviator of particle p as a tensor, and back.
@@ -91,6 +93,10 @@ struct ParticleSet {
     for (auto& a : self.stretch) fn(a, 1);
     fn(self.history, self.history_stride);
   }
+
+  // remove_flagged()'s scratch: slots to fill and the particles that fill them.
+  std::vector<std::size_t> holes_;
+  std::vector<std::size_t> fillers_;
 };
 
 /// Index of the particle nearest to x (a gauge is an Eulerian point); 0 when there is none.

@@ -62,11 +62,13 @@ TEST(FollowedGauges, KeepTheirParticleByIdThroughRemovalUntilItLeaves) {
   EXPECT_FALSE(followed.follows("fixed"));
   EXPECT_THROW((void)followed.particle("fixed", ps), Error);
   EXPECT_EQ(followed.particle("a", ps), 2U);
-  const std::vector<std::uint8_t> first = {1, 0, 0, 0};  // removes id 10: id 12 moves to index 1
+  EXPECT_EQ(followed.particle("b", ps), 3U);
+  const std::vector<std::uint8_t> first = {1, 0, 0, 0};  // removes id 10: id 13 fills index 0
   ps.remove_flagged(first);
-  EXPECT_EQ(followed.particle("a", ps), 1U);
+  EXPECT_EQ(followed.particle("a", ps), 2U);
+  EXPECT_EQ(followed.particle("b", ps), 0U);
   EXPECT_EQ(ps.id[followed.particle("b", ps)], 13U);
-  const std::vector<std::uint8_t> second = {0, 1, 0};  // removes id 12
+  const std::vector<std::uint8_t> second = {0, 0, 1};  // removes id 12
   ps.remove_flagged(second);
   EXPECT_EQ(followed.particle("a", ps), FollowedGauges::kLeft);
   EXPECT_EQ(ps.id[followed.particle("b", ps)], 13U);
