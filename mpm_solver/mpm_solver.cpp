@@ -981,23 +981,29 @@ bool MpmSolver::physical(std::size_t p) const {
   return finite && ps.density[p] > 0.0 && !(gas_[ps.material[p]] != 0 && ps.pressure[p] < 0.0);
 }
 
-void MpmSolver::compute_stable_dt() {
+double MpmSolver::signal_speed(std::size_t p) const {
   const auto& ps = particles_;
-  double fastest = 0.0;
+  const double v2 = ps.velocity[0][p] * ps.velocity[0][p] + ps.velocity[1][p] * ps.velocity[1][p] +
+                    ps.velocity[2][p] * ps.velocity[2][p];
+  return ps.sound_speed[p] + std::sqrt(v2);
+}
+
+void MpmSolver::compute_stable_dt(std::size_t first) {
+  double fastest = first > 0 ? fastest_speed_ : 0.0;
   std::size_t unphysical = 0;
-  const auto count = static_cast<std::ptrdiff_t>(ps.size());
+  const auto begin = static_cast<std::ptrdiff_t>(first);
+  const auto count = static_cast<std::ptrdiff_t>(particles_.size());
 #pragma omp parallel for schedule(static) reduction(max : fastest) reduction(+ : unphysical) \
-    if (count >= kMinParallelCount)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    if (count - begin >= kMinParallelCount)
+  for (std::ptrdiff_t i = begin; i < count; ++i) {
     const auto p = static_cast<std::size_t>(i);
-    const double v2 = ps.velocity[0][p] * ps.velocity[0][p] +
-                      ps.velocity[1][p] * ps.velocity[1][p] + ps.velocity[2][p] * ps.velocity[2][p];
-    fastest = std::max(fastest, ps.sound_speed[p] + std::sqrt(v2));
+    fastest = std::max(fastest, signal_speed(p));
     unphysical += physical(p) ? 0 : 1;
   }
   // std::max drops a NaN speed: without this check a broken particle would
   // neither limit the step nor stop the run.
   if (unphysical > 0) throw_unphysical(unphysical);
+  fastest_speed_ = fastest;
   stable_dt_ = fastest > 0.0 ? settings_.cfl * min_spacing_ / fastest
                              : std::numeric_limits<double>::infinity();
 }

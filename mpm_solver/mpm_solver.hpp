@@ -228,8 +228,13 @@ class MpmSolver {
   /// Throws mpfd::Error naming the first particle leaving_ marks as collapsed.
   [[noreturn]] void throw_collapsed(std::size_t count, double t1) const;
   void remove_outflow();
-  /// The step limit from every particle; throws (throw_unphysical) if one is unphysical.
-  void compute_stable_dt();
+  /// The CFL step from the fastest particle (c + |v|); with first > 0 only the
+  /// particles from `first` on are visited and the others' speed is the one last
+  /// computed (particles appended since). Throws (throw_unphysical) if a visited
+  /// particle is unphysical.
+  void compute_stable_dt(std::size_t first = 0);
+  /// c + |v| of particle p [m/s].
+  [[nodiscard]] double signal_speed(std::size_t p) const;
   /// Particle p's state is finite, its density positive and, in an ideal gas, its pressure not
   /// negative.
   [[nodiscard]] bool physical(std::size_t p) const;
@@ -272,6 +277,7 @@ class MpmSolver {
   std::vector<std::int32_t> home_slot_;   // scratch, per particle
   std::vector<std::uint8_t> leaving_;     // scratch, per particle
   double stable_dt_ = 0.0;
+  double fastest_speed_ = 0.0;  ///< max over particles of c + |v| when stable_dt_ was set
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   double particle_updates_ = 0.0;

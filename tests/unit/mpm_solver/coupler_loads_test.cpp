@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "common/config/scene_loader.hpp"
 #include "common/core/error.hpp"
@@ -116,6 +117,31 @@ TEST(CouplerLoads, Injected_particles_step_in_a_zone_with_non_reflecting_faces) 
   EXPECT_EQ(solver.bodies().size(), 3u);  // a, b and the injected gas
   const auto& ps = solver.particles();
   for (std::size_t p = 0; p < ps.size(); ++p) ASSERT_TRUE(std::isfinite(ps.velocity[0][p]));
+}
+
+// Injection visits only the new particles and removal recomputes only when the
+// fastest particle leaves: both must give the step a full pass over the set gives.
+TEST(CouplerLoads, The_stable_step_after_injection_and_removal_is_the_full_passes) {
+  const auto scene = gas_zone("", "{}");
+  MpmSolver solver(scene, MpmSettings::from_scene(scene));
+  const double at_rest = solver.stable_dt();
+  ParticleBatch fast = one_cell_of_gas(0.45);
+  fast.velocity[0] = 900.0;  // particle 0 of the batch: the fastest of all
+  solver.inject_particles(fast);
+  const std::size_t n = solver.particles().size();
+  const double c = solver.particles().sound_speed[n - 4];
+  EXPECT_DOUBLE_EQ(solver.stable_dt(), at_rest * c / (c + 900.0));
+  // The slow injected particles leave: unchanged, fast one still in.
+  std::vector<std::uint8_t> slow(n, 0);
+  for (std::size_t p = n - 3; p < n; ++p) slow[p] = 1;
+  const double with_fast = solver.stable_dt();
+  (void)solver.remove_particles(slow);
+  EXPECT_EQ(solver.stable_dt(), with_fast);
+  // The fast one leaves: back to the step of the gas at rest, to the bit.
+  std::vector<std::uint8_t> fastest(n - 3, 0);
+  fastest.back() = 1;
+  (void)solver.remove_particles(fastest);
+  EXPECT_EQ(solver.stable_dt(), at_rest);
 }
 
 }  // namespace
