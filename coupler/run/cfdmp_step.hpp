@@ -13,8 +13,10 @@
 // export strip_cells, (export fdm_owned and dormant_zone), propose_dt; the
 // gauges (run/gauges.hpp) append SampleGauges to either request when due.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -72,9 +74,13 @@ class CfdmpStep {
   /// Reads the replies to the requests of the last build().
   void read(const StepPlan& plan, const cosim::Message& fdm, const cosim::Message& mpm);
 
-  /// min of the two solvers' last proposals [s].
-  [[nodiscard]] double stable_dt() const { return std::min(fdm_dt_, mpm_dt_); }
-  [[nodiscard]] const char* limited_by() const { return fdm_dt_ <= mpm_dt_ ? "fdm" : "mpm"; }
+  /// min of the two solvers' last proposals and the strip cells' cap
+  /// (strip_step_limit.hpp) [s].
+  [[nodiscard]] double stable_dt() const { return std::min({fdm_dt_, mpm_dt_, strip_dt_}); }
+  /// What sets stable_dt(): "fdm", "mpm" or "strip".
+  [[nodiscard]] const char* limited_by() const {
+    return strip_dt_ < std::min(fdm_dt_, mpm_dt_) ? "strip" : fdm_dt_ <= mpm_dt_ ? "fdm" : "mpm";
+  }
   /// The FDM's pressure on strip_cells at the last export [Pa] (the activation watch).
   [[nodiscard]] const std::vector<double>& strip_pressure() const { return strip_now_.pressure; }
   /// The audit exports of the last audited step: FDM zone outside the MPM zone, MPM particles
@@ -149,6 +155,7 @@ class CfdmpStep {
   std::uint64_t next_id_ = std::uint64_t{1} << 48;  ///< injected ids, far above the MPM's own
 
   Strip strip_now_, strip_prev_;
+  double strip_dt_ = std::numeric_limits<double>::infinity();
   bool flux_due_ = false;
   double dt_last_ = 0;
   handshake::Parcels<Dim> parcels_;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <string_view>
 #include <variant>
 
 #include "common/core/error.hpp"
@@ -140,6 +141,7 @@ class Loop {
       if (watch_.due()) activate(t, n);
       const double next_output = std::min(scene_.time.end, outputs * interval);
       double dt = step_.stable_dt();
+      count_limit(step_.limited_by());
       bool output_now = false;
       if (t + dt >= next_output * (1 - 1e-12)) {
         dt = next_output - t;
@@ -207,10 +209,20 @@ class Loop {
                                    {"mpm_advance_seconds", report_.mpm_advance_seconds},
                                    {"slower_advance_seconds", report_.max_advance_seconds},
                                    {"coupling_overhead_share", overhead}});
+    summary_.set_detail("steps_limited_by", {{"fdm", report_.steps_limited_by_fdm},
+                                             {"mpm", report_.steps_limited_by_mpm},
+                                             {"strip", report_.steps_limited_by_strip}});
     summary_.write(options_.out_dir / "summary.json");
   }
 
  private:
+  void count_limit(std::string_view by) {
+    auto& count = by == "strip" ? report_.steps_limited_by_strip
+                  : by == "mpm" ? report_.steps_limited_by_mpm
+                                : report_.steps_limited_by_fdm;
+    ++count;
+  }
+
   [[nodiscard]] Totals current() const {
     Totals now = sum({step_.fdm_totals(), step_.mpm_totals(), step_.parcel_totals()});
     now.mass -= switch_.mass;

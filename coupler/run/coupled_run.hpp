@@ -45,7 +45,12 @@ struct CoupledRunReport {
   double fdm_advance_seconds = 0;  ///< Σ AdvanceResult.wall_seconds of the FDM
   double mpm_advance_seconds = 0;
   double max_advance_seconds = 0;  ///< Σ over steps of the slower solver's advance
-  double mass_error = 0;           ///< relative, against the initial total
+  /// Steps whose dt the FDM's proposal, the MPM's or the strip cells' cap
+  /// (strip_step_limit.hpp) set (output steps cut short are counted too).
+  std::int64_t steps_limited_by_fdm = 0;
+  std::int64_t steps_limited_by_mpm = 0;
+  std::int64_t steps_limited_by_strip = 0;
+  double mass_error = 0;  ///< relative, against the initial total
   double energy_error = 0;
 };
 

@@ -85,16 +85,20 @@ TEST(CoupledRun, Quiet_air_stays_quiet_and_conserves_over_the_zones) {
   const auto out = fresh_dir("quiet");
   const auto report = run_cfdmp(scene, text, *h.hub, solvers, options(out));
 
-  // The FDM proposes 73.2 us for c = 341.6 m/s, dx = 25 mm (the MPM stand-in 1 s):
-  // 2 ms / 73.2 us = 27.3 -> 28 steps, the output at 1 ms cutting one.
-  EXPECT_GE(report.steps, 28);
-  EXPECT_LE(report.steps, 29);
+  // The FDM proposes 73.2 us for c = 341.6 m/s, dx = 25 mm (its CFL 0.5 counts
+  // half steps), the MPM stand-in 1 s; the strip cells' cap, the MPM's CFL 0.5 on
+  // the same air, 36.6 us: 2 ms / 36.6 us = 54.6 -> 55 steps, the output at 1 ms
+  // cutting one.
+  EXPECT_GE(report.steps, 55);
+  EXPECT_LE(report.steps, 56);
   EXPECT_DOUBLE_EQ(report.time, 2.0e-3);
   EXPECT_LT(std::abs(report.mass_error), 1e-14);
   EXPECT_LT(std::abs(report.energy_error), 1e-14);
   EXPECT_EQ(h.mpm.injected_mass.load(), 0.0);
   const auto summary = read_json(out / "summary.json");
   EXPECT_EQ(summary["status"], "completed");
+  EXPECT_EQ(summary["details"]["steps_limited_by"]["fdm"].get<int>(), 0);
+  EXPECT_GE(summary["details"]["steps_limited_by"]["strip"].get<int>(), 55);
   // FDM owned: 16 cells x 1.2 kg/m^3 x 2.5e-6 m^3; MPM: 24 cells.
   EXPECT_NEAR(summary["details"]["zones"]["fdm_owned"]["mass"].get<double>(), 16 * 1.2 * 2.5e-6,
               1e-15);
