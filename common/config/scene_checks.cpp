@@ -192,12 +192,10 @@ void check_mpm_only(const Scene& s, Diagnostics& d) {
               "with solver.method other than mpm");
     }
   }
-  // A coupled zone's nodes take the FDM side's loads at the full pressure.
-  if (s.solver.mpm.reference_pressure > 0.0 && s.solver.method != Method::mpm &&
-      s.solver.method != Method::afdmp) {
+  // Only the MPM uses it (CFDMP: the coupler takes it off the FDM cells' (4-9) too).
+  if (s.solver.mpm.reference_pressure > 0.0 && s.solver.method == Method::fdm) {
     d.error("solver.mpm.reference_pressure",
-            "expected 0 with solver.method fdm or cfdmp (the coupler's node loads carry the "
-            "full pressure), got " +
+            "expected 0 with solver.method fdm (no MPM runs), got " +
                 num(s.solver.mpm.reference_pressure));
   }
   // usavg's first half-strain uses the summed nodal v^n: per-body contact fields

@@ -49,8 +49,9 @@ InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
 
 template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
-                          const StripLayout<Dim>& layout, const InterfaceStencil<Dim>& stencil,
-                          const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add) {
+                          double reference_pressure, const StripLayout<Dim>& layout,
+                          const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
+                          const NodeOutputs<Dim>& add) {
   geometry.check();
   require_lengths(strip, layout.box.count(), "strip cells");
   require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
@@ -72,9 +73,9 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
       for (int b = 0; b < Dim - 1; ++b)
         gradient(axes[b]) =
             (((q >> b) & 1) != 0 ? 1.0 : -1.0) / (geometry.spacing(axes[b]) * kFaceCorners<Dim>);
-      mass += weight * strip.rho[c] * volume;           // T (4-7)
-      momentum += weight * volume * strip.momentum[c];  // T (4-8)
-      force += strip_pressure[c] * volume * gradient;   // T (4-9)
+      mass += weight * strip.rho[c] * volume;                                 // T (4-7)
+      momentum += weight * volume * strip.momentum[c];                        // T (4-8)
+      force += (strip_pressure[c] - reference_pressure) * volume * gradient;  // T (4-9)
     }
     add.mass[n] = mass;
     add.momentum[n] = momentum;
@@ -82,11 +83,11 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
   }
 }
 
-#define MPFD_INSTANTIATE_INTERFACE(Dim)                                                          \
-  template InterfaceStencil<Dim> make_interface_stencil<Dim>(const StripLayout<Dim>&,            \
-                                                             const IndexBox<Dim>&);              \
-  template void interface_node_terms<Dim>(const CellStates<Dim>&, std::span<const double>,       \
-                                          const StripLayout<Dim>&, const InterfaceStencil<Dim>&, \
+#define MPFD_INSTANTIATE_INTERFACE(Dim)                                                            \
+  template InterfaceStencil<Dim> make_interface_stencil<Dim>(const StripLayout<Dim>&,              \
+                                                             const IndexBox<Dim>&);                \
+  template void interface_node_terms<Dim>(const CellStates<Dim>&, std::span<const double>, double, \
+                                          const StripLayout<Dim>&, const InterfaceStencil<Dim>&,   \
                                           const CellGeometry<Dim>&, const NodeOutputs<Dim>&);
 MPFD_INSTANTIATE_INTERFACE(1)
 MPFD_INSTANTIATE_INTERFACE(2)

@@ -43,10 +43,14 @@ template <int Dim>
 
 /// The second terms of T (4-7) ... (4-9) for each interface node, written to
 /// `add` (an ApplyRegion{interface_nodes, ADD}) from the strip's exported
-/// states and pressure (strip order).
+/// states and pressure (strip order). The force (4-9) uses p - reference_pressure
+/// [Pa]: the MPM zone's particles leave solver.mpm.reference_pressure out of their
+/// stress (docs/mpm.md), and the FDM cells standing in for particles must too, or
+/// a uniform state would push the face nodes.
 template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
-                          const StripLayout<Dim>& layout, const InterfaceStencil<Dim>& stencil,
-                          const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add);
+                          double reference_pressure, const StripLayout<Dim>& layout,
+                          const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
+                          const NodeOutputs<Dim>& add);
 
 }  // namespace mpfd::coupler::handshake

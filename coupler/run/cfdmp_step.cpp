@@ -375,8 +375,8 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
   momentum.resize(n);
   force.resize(n);
   handshake::interface_node_terms<Dim>({strip_now_.rho, strip_now_.momentum, strip_now_.energy},
-                                       strip_now_.pressure, strip_layout_, stencil_, geometry_,
-                                       {mass, momentum, force});
+                                       strip_now_.pressure, scene_.solver.mpm.reference_pressure,
+                                       strip_layout_, stencil_, geometry_, {mass, momentum, force});
   cosim::add_array(mpm, {"interface_nodes", "mass", {}, "kg"}, std::span<const double>(mass));
   cosim::add_array(mpm, {"interface_nodes", "momentum", {n, 3}, "kg*m/s"},
                    to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));

@@ -61,11 +61,11 @@ TEST(SceneChecks, Non_reflecting_faces_are_mpm_only_and_the_normal_body_exists) 
       kBlast + "boundaries: {y_upper: non_reflecting}\nsolver: {method: mpm}\n", "scene.yaml"));
 }
 
-TEST(SceneChecks, Reference_pressure_is_mpm_and_afdmp_only) {
+TEST(SceneChecks, Reference_pressure_needs_an_mpm) {
   const std::string options = "mpm: {reference_pressure: 101325}}\n";
   EXPECT_THAT(errors_of(kBlast + "solver: {method: fdm, " + options),
               ElementsAre(::testing::HasSubstr(
-                  "solver.mpm.reference_pressure: expected 0 with solver.method fdm or cfdmp")));
+                  "solver.mpm.reference_pressure: expected 0 with solver.method fdm")));
   EXPECT_NO_THROW(parse_scene(kBlast + "solver: {method: mpm, " + options, "scene.yaml"));
 }
 

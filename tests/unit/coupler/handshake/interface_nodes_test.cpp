@@ -77,8 +77,8 @@ TYPED_TEST(InterfaceNodes, Uniform_flow_is_left_unchanged) {
       const Strip<Dim> strip{std::vector<double>(n, rho), std::vector<Vec<Dim>>(n, rho * v),
                              std::vector<double>(n, 0.0), std::vector<double>(n, pressure)};
       Added<Dim> add(nodes.count());
-      interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, layout,
-                                make_interface_stencil(layout, nodes), g, add.outputs());
+      interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.0,
+                                layout, make_interface_stencil(layout, nodes), g, add.outputs());
       const double node_mass = rho * g.cell_volume;
       const double force_scale = pressure * g.face_area(axis);
       for (std::size_t i = 0; i < nodes.count(); ++i) {
@@ -120,8 +120,8 @@ TYPED_TEST(InterfaceNodes, Correction_conserves_momentum_for_any_strip_state) {
       strip.pressure.push_back(1e5 * unit(random));
     }
     Added<Dim> add(nodes.count());
-    interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, layout,
-                              make_interface_stencil(layout, nodes), g, add.outputs());
+    interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.0,
+                              layout, make_interface_stencil(layout, nodes), g, add.outputs());
     double mass = 0, expected_mass = 0;
     Vec<Dim> momentum = Vec<Dim>::Zero(), expected_momentum = Vec<Dim>::Zero();
     Vec<Dim> force = Vec<Dim>::Zero(), expected_force = Vec<Dim>::Zero();
@@ -147,6 +147,44 @@ TEST(InterfaceNodes2D, Node_box_must_lie_on_the_face) {
   const auto layout = make_strip_layout(IndexBox<2>{{3, 0}, {5, 4}}, face);
   EXPECT_THROW((void)make_interface_stencil(layout, IndexBox<2>{{3, 0}, {4, 5}}), Error);
   EXPECT_NO_THROW((void)make_interface_stencil(layout, IndexBox<2>{{4, 0}, {5, 5}}));
+}
+
+// solver.mpm.reference_pressure: the zone's particles leave p_ref out of their
+// stress, so the FDM cells' force (4-9) uses p - p_ref. At p = p_ref it vanishes
+// (a uniform ambient state pushes no face node); elsewhere it scales with
+// p - p_ref; mass and momentum (4-7), (4-8) do not depend on it.
+TYPED_TEST(InterfaceNodes, Reference_pressure_comes_off_the_force_only) {
+  constexpr int Dim = TypeParam::value;
+  const auto g = test::test_geometry<Dim>();
+  const ZoneFace face{Dim - 1, 1};
+  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  auto nodes = test::cube<Dim>(0, 7);
+  nodes.lo[face.axis] = layout.face_node_layer();
+  nodes.hi[face.axis] = nodes.lo[face.axis] + 1;
+  const std::size_t n = layout.box.count();
+  const double p = 1.0e5;
+  Vec<Dim> u = Vec<Dim>::Zero();
+  u(0) = 30.0;
+  const Strip<Dim> strip{std::vector<double>(n, 1.2), std::vector<Vec<Dim>>(n, 1.2 * u),
+                         std::vector<double>(n, 0.0), std::vector<double>(n, p)};
+  const auto stencil = make_interface_stencil(layout, nodes);
+  Added<Dim> full(nodes.count()), at_ambient(nodes.count()), quarter(nodes.count());
+  interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.0, layout,
+                            stencil, g, full.outputs());
+  interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, p, layout,
+                            stencil, g, at_ambient.outputs());
+  interface_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.25 * p,
+                            layout, stencil, g, quarter.outputs());
+  const double scale = p * g.face_area(face.axis);
+  bool pushed = false;
+  for (std::size_t i = 0; i < nodes.count(); ++i) {
+    pushed = pushed || full.force[i].norm() > 1e-3 * scale;
+    EXPECT_EQ(at_ambient.force[i].norm(), 0.0) << "node " << i;
+    EXPECT_LE((quarter.force[i] - 0.75 * full.force[i]).norm(), 1e-12 * scale) << "node " << i;
+    EXPECT_EQ(at_ambient.mass[i], full.mass[i]);
+    EXPECT_EQ((at_ambient.momentum[i] - full.momentum[i]).norm(), 0.0);
+  }
+  EXPECT_TRUE(pushed);  // without p_ref the face nodes do feel the cells' pressure
 }
 
 }  // namespace
