@@ -48,6 +48,7 @@ def scene_text(method, h, end, charge="tnt"):
     if method == "fdm":
         text = re.sub(r"zones:\n(  .*\n)+", "", text)
         text = text.replace("method: cfdmp", "method: fdm")
+        text = re.sub(r", reference_pressure: [0-9.e+-]+", "", text)  # an MPM option
     if method == "mpm":
         text = re.sub(r"zones:\n(  .*\n)+", "", text)
         text = text.replace("method: cfdmp", "method: mpm")
