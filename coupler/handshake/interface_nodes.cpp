@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::coupler::handshake {
 namespace {
@@ -50,8 +51,11 @@ InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
 template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
                           const StripLayout<Dim>& layout, const InterfaceStencil<Dim>& stencil,
-                          const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add) {
+                          const CellGeometry<Dim>& geometry, const NodeOutputs<Dim>& add,
+                          std::span<const double> force_volume) {
   geometry.check();
+  if (!force_volume.empty())
+    require_length(force_volume.size(), layout.face_cells(), "interface nodes", "force_volume");
   require_lengths(strip, layout.box.count(), "strip cells");
   require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
   require_node_lengths(add, stencil.cells.size(), "interface nodes");
@@ -74,11 +78,29 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
             (((q >> b) & 1) != 0 ? 1.0 : -1.0) / (geometry.spacing(axes[b]) * kFaceCorners<Dim>);
       mass += weight * strip.rho[c] * volume;           // T (4-7)
       momentum += weight * volume * strip.momentum[c];  // T (4-8)
-      force += strip_pressure[c] * volume * gradient;   // T (4-9)
+      const double pushing =
+          force_volume.empty() ? volume : force_volume[static_cast<std::size_t>(t)];
+      force += strip_pressure[c] * pushing * gradient;  // T (4-9), V_c or the MPM's
     }
     add.mass[n] = mass;
     add.momentum[n] = momentum;
     add.internal_force[n] = force;
+  }
+}
+
+template <int Dim>
+void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
+                      const StripLayout<Dim>& layout, std::span<double> volume) {
+  const std::size_t n = layout.face_cells();
+  require_length(face_mass.size(), n, "face push volume", "face_mass");
+  require_length(strip_rho.size(), layout.box.count(), "face push volume", "strip rho");
+  require_length(volume.size(), n, "face push volume", "volume");
+  for (std::size_t t = 0; t < n; ++t) {
+    const double rho = strip_rho[layout.outer[t]];
+    if (!(rho > 0))
+      throw Error("face push volume: face cell " + std::to_string(t) +
+                  " needs an outer cell with rho > 0, got " + shortest_text(rho));
+    volume[t] = face_mass[t] / rho;
   }
 }
 
@@ -87,7 +109,10 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
                                                              const IndexBox<Dim>&);              \
   template void interface_node_terms<Dim>(const CellStates<Dim>&, std::span<const double>,       \
                                           const StripLayout<Dim>&, const InterfaceStencil<Dim>&, \
-                                          const CellGeometry<Dim>&, const NodeOutputs<Dim>&);
+                                          const CellGeometry<Dim>&, const NodeOutputs<Dim>&,     \
+                                          std::span<const double>);                              \
+  template void face_push_volume<Dim>(std::span<const double>, std::span<const double>,          \
+                                      const StripLayout<Dim>&, std::span<double>);
 MPFD_INSTANTIATE_INTERFACE(1)
 MPFD_INSTANTIATE_INTERFACE(2)
 MPFD_INSTANTIATE_INTERFACE(3)
