@@ -97,8 +97,8 @@ TEST(StabilityCfdmpFace, Acoustic_pulse_through_the_zone_face_stays_a_pulse_for_
   // particles within a few injections.
   for (const double cfl : {0.1, 0.5}) {
     const auto work = work_dir("cfdmp-acoustic");
-    const Outcome o = run_scene(acoustic_scene(Solver::cfdmp, cfl), Solver::cfdmp, std::nullopt,
-                                work);
+    const Outcome o =
+        run_scene(acoustic_scene(Solver::cfdmp, cfl), Solver::cfdmp, std::nullopt, work);
     std::filesystem::remove_all(work);
     ASSERT_FALSE(o.stopped) << "CFL " << cfl << ": " << o.message;
     for (const Samples* s : {&o.half, &o.end}) {
