@@ -164,12 +164,14 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
     add_export(mpm, "ghost_nodes", {"mass", "momentum", "internal_energy"});
     mpm_ops_.push_back(Op::export_ghost);
   }
+  // Before the removal: the particles it takes lie outside cell k-w+1 anyway, and its
+  // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read).
+  add_export(mpm, "face_particles", {"mass", "position"});
+  mpm_ops_.push_back(Op::export_face_particles);
   if (plan.advance) {
     add_remove(mpm, "crossed", "mpm_zone");
     mpm_ops_.push_back(Op::remove);
   }
-  add_export(mpm, "face_particles", {"mass", "position"});
-  mpm_ops_.push_back(Op::export_face_particles);
   if (plan.audit) {
     if (features_.mpm_outflow)
       add_export(mpm, "mpm_zone",
@@ -541,17 +543,20 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
 template <int Dim>
 void CfdmpStep<Dim>::read_face_particles(std::size_t n, const cosim::Message& reply) {
   // Σ m_p per cell k-w+1: the zone's particles that resist the FDM's push (face_push_volume).
-  auto& mass = scratch_.mass;
-  auto& position = scratch_.position;
-  read_doubles(reply, kMpm, "face_particles", "mass", n, mass);
-  read_wire_vectors<Dim>(reply, kMpm, "face_particles", "position", n, layout_, position);
+  // Summed from the views: the count changes every injection, so no copy is kept.
+  const auto mass_view = cosim::view_array<double>(reply, "face_particles", "mass");
+  const auto position_view = cosim::view_array<double>(reply, "face_particles", "position");
+  const auto mass = mass_view.values(), position = position_view.values();
+  check_value_count(reply, kMpm, "face_particles", "mass", mass.size(), n);
+  check_value_count(reply, kMpm, "face_particles", "position", position.size(), 3 * n);
   std::fill(face_mass_.begin(), face_mass_.end(), 0.0);
   for (std::size_t p = 0; p < n; ++p) {
     handshake::Index<Dim> cell{};
-    for (int a = 0; a < Dim; ++a) {  // clamped: a particle on the box's edge is the box's
-      const auto i = static_cast<std::int64_t>(
-          std::floor((position[p](a) - geometry_.origin(a)) / geometry_.spacing(a)));
-      cell[a] = std::clamp(i, face_cells_.lo[a], face_cells_.hi[a] - 1);
+    for (int k = 0; k < Dim; ++k) {  // clamped: a particle on the box's edge is the box's
+      const double x = position[3 * p + static_cast<std::size_t>(layout_.active[k])];
+      const auto i =
+          static_cast<std::int64_t>(std::floor((x - geometry_.origin(k)) / geometry_.spacing(k)));
+      cell[k] = std::clamp(i, face_cells_.lo[k], face_cells_.hi[k] - 1);
     }
     face_mass_[face_cells_.flat(cell)] += mass[p];
   }

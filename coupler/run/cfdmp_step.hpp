@@ -6,7 +6,7 @@
 //   FDM: [apply deposit_cells ADD, apply ghost_cells SET, advance, export strip_cells,
 //         (export coupling_face: v1.1), (export fdm_owned), propose_dt]
 //   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
-//         remove "crossed" (left mpm_zone), export face_particles, (export mpm_zone),
+//         export face_particles, remove "crossed" (left mpm_zone), (export mpm_zone),
 //         propose_dt]
 // A step without advance (step 0, and the one before each output) keeps only the
 // applies of deposits, the exports and the proposals. While the MPM zone is
