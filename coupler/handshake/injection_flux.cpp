@@ -141,6 +141,23 @@ void accumulate_crossed_amounts(const CrossedAmounts<Dim>& crossed, const CellSt
         move_parcel(pending, t, returned);
       continue;
     }
+    if (-m < pending.mass[t]) {
+      // Flow back out: the FDM's flux takes back first what still waits in the parcel (the
+      // slab next to the face), by its share. Returning the whole parcel at once dumped it into
+      // cell k-w at every flow reversal (acoustic case, docs/stability.md: +0.039 Pa in that
+      // cell against a 0.007 Pa wave, which then pumped the zone's face).
+      const double share = -m / pending.mass[t];
+      returned.mass[t] = 0;  // share * M + m, exactly
+      returned.momentum[t] = share * pending.momentum[t] + momentum;
+      returned.energy[t] = share * pending.energy[t] + energy;
+      const double keep = 1 - share;
+      pending.mass[t] += m;
+      pending.momentum[t] *= keep;
+      pending.energy[t] *= keep;
+      pending.volume[t] *= keep;
+      pending.travel[t] *= keep;
+      continue;
+    }
     move_parcel(pending, t, returned);
     returned.mass[t] += m;
     returned.momentum[t] += momentum;

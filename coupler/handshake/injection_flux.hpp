@@ -65,13 +65,15 @@ struct CrossedAmounts {
 /// interface force (4-9) instead; p_f = ½(p_a + p_b) estimates the face pressure
 /// (p_a alone, as (4-9), gave an MPM-part Sod error of 1.67e-2 instead of
 /// 1.61e-2, docs/coupler.md); ρ_f is (4-10), volume m/ρ_f, travel m/(ρ_f A). Where m <= 0 the
-/// FDM's cell a received the material through its own flux while the MPM's
-/// crossing particles are deposited too: the parcel and those advective amounts
-/// (negative) go to `returned`, which cancels them. A parcel whose internal
-/// energy E - ½|P|²/M is not > 0 after the step's m > 0 (p_f far from the
-/// flux's own face pressure, behind a strong wave) also goes to `returned`,
-/// whole: T (4-18) would give its particles e < 0. `strip` and `pressure` are
-/// the strip_cells of the step's start.
+/// FDM's cell a received the material through its own flux. If the parcel holds more than |m|,
+/// that flux took back the parcel's share |m|/M (the material next to the face): the parcel
+/// keeps 1 - |m|/M of each amount and `returned` gets the share plus the (negative) advective
+/// amounts, zero mass (returning the whole parcel at each flow reversal put it into cell a at
+/// once: docs/stability.md, acoustic case). Else the MPM's crossing particles are deposited too:
+/// the parcel and those advective amounts go to `returned`, which cancels them. A parcel whose
+/// internal energy E - ½|P|²/M is not > 0 after the step's m > 0 (p_f far from the flux's own face
+/// pressure, behind a strong wave) also goes to `returned`, whole: T (4-18) would give its
+/// particles e < 0. `strip` and `pressure` are the strip_cells of the step's start.
 template <int Dim>
 void accumulate_crossed_amounts(const CrossedAmounts<Dim>& crossed, const CellStates<Dim>& strip,
                                 std::span<const double> pressure, const StripLayout<Dim>& layout,

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::coupler::handshake {
 namespace {
@@ -51,8 +52,10 @@ template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
                           double reference_pressure, const StripLayout<Dim>& layout,
                           const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
-                          const NodeOutputs<Dim>& add) {
+                          const NodeOutputs<Dim>& add, std::span<const double> force_volume) {
   geometry.check();
+  if (!force_volume.empty())
+    require_length(force_volume.size(), layout.face_cells(), "interface nodes", "force_volume");
   require_lengths(strip, layout.box.count(), "strip cells");
   require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
   require_node_lengths(add, stencil.cells.size(), "interface nodes");
@@ -73,13 +76,31 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
       for (int b = 0; b < Dim - 1; ++b)
         gradient(axes[b]) =
             (((q >> b) & 1) != 0 ? 1.0 : -1.0) / (geometry.spacing(axes[b]) * kFaceCorners<Dim>);
-      mass += weight * strip.rho[c] * volume;                                 // T (4-7)
-      momentum += weight * volume * strip.momentum[c];                        // T (4-8)
-      force += (strip_pressure[c] - reference_pressure) * volume * gradient;  // T (4-9)
+      mass += weight * strip.rho[c] * volume;           // T (4-7)
+      momentum += weight * volume * strip.momentum[c];  // T (4-8)
+      const double pushing =
+          force_volume.empty() ? volume : force_volume[static_cast<std::size_t>(t)];
+      force += (strip_pressure[c] - reference_pressure) * pushing * gradient;  // T (4-9)
     }
     add.mass[n] = mass;
     add.momentum[n] = momentum;
     add.internal_force[n] = force;
+  }
+}
+
+template <int Dim>
+void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
+                      const StripLayout<Dim>& layout, std::span<double> volume) {
+  const std::size_t n = layout.face_cells();
+  require_length(face_mass.size(), n, "face push volume", "face_mass");
+  require_length(strip_rho.size(), layout.box.count(), "face push volume", "strip rho");
+  require_length(volume.size(), n, "face push volume", "volume");
+  for (std::size_t t = 0; t < n; ++t) {
+    const double rho = strip_rho[layout.outer[t]];
+    if (!(rho > 0))
+      throw Error("face push volume: face cell " + std::to_string(t) +
+                  " needs an outer cell with rho > 0, got " + shortest_text(rho));
+    volume[t] = face_mass[t] / rho;
   }
 }
 
@@ -88,7 +109,10 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
                                                              const IndexBox<Dim>&);                \
   template void interface_node_terms<Dim>(const CellStates<Dim>&, std::span<const double>, double, \
                                           const StripLayout<Dim>&, const InterfaceStencil<Dim>&,   \
-                                          const CellGeometry<Dim>&, const NodeOutputs<Dim>&);
+                                          const CellGeometry<Dim>&, const NodeOutputs<Dim>&,       \
+                                          std::span<const double>);                                \
+  template void face_push_volume<Dim>(std::span<const double>, std::span<const double>,            \
+                                      const StripLayout<Dim>&, std::span<double>);
 MPFD_INSTANTIATE_INTERFACE(1)
 MPFD_INSTANTIATE_INTERFACE(2)
 MPFD_INSTANTIATE_INTERFACE(3)

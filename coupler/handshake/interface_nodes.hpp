@@ -46,11 +46,26 @@ template <int Dim>
 /// states and pressure (strip order). The force (4-9) uses p - reference_pressure
 /// [Pa]: the MPM zone's particles leave solver.mpm.reference_pressure out of their
 /// stress (docs/mpm.md), and the FDM cells standing in for particles must too, or
-/// a uniform state would push the face nodes.
+/// a uniform state would push the face nodes. `force_volume`, per face cell,
+/// replaces V_c in (4-9) for that face cell's outer cell (empty: V_c, T as
+/// printed; the coupler passes the MPM's mass in cell k-w+1 over ρ_c, see
+/// face_push_volume).
 template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
                           double reference_pressure, const StripLayout<Dim>& layout,
                           const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
-                          const NodeOutputs<Dim>& add);
+                          const NodeOutputs<Dim>& add, std::span<const double> force_volume = {});
+
+/// The volume of the FDM cell k-w in (4-9) that makes it push on the face nodes
+/// as the MPM's own particles would (a departure from T, docs/coupler.md,
+/// "FDM push on the interface nodes"): an MPM particle set of mass m at
+/// density ρ pushes with p m / ρ, whatever its compression; V_c (T) pushes
+/// with p V_c, more than the zone's particles next to the face resist with
+/// once they are compressed (their mass is fixed, the FDM cell's grows). So
+/// per face cell V = m_t / ρ_outer, m_t the MPM particles' mass in cell
+/// k-w+1 (region face_particles). Writes `volume` (one per face cell).
+template <int Dim>
+void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
+                      const StripLayout<Dim>& layout, std::span<double> volume);
 
 }  // namespace mpfd::coupler::handshake

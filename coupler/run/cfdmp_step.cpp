@@ -72,6 +72,7 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
                                                to_kernel_box<Dim>(layout.interface_nodes, layout));
   ghost_cells_ = to_kernel_box<Dim>(layout.ghost_cells, layout);
   ghost_nodes_ = to_kernel_box<Dim>(layout.ghost_nodes, layout);
+  face_cells_ = to_kernel_box<Dim>(layout.face_cells, layout);
   deposit_box_ = to_kernel_box<Dim>(layout.deposit_cells, layout);
   corners_ = handshake::corner_nodes(ghost_cells_, ghost_nodes_);
   handshake::Index<Dim> domain_cells{};
@@ -92,6 +93,8 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
     face_in_export_[t] = face_box.flat(cell);
   }
   crossed_mass_.assign(faces, 0);
+  face_mass_.assign(faces, 0);
+  push_volume_.assign(faces, 0);
   crossed_energy_.assign(faces, 0);
   crossed_momentum_.assign(faces, Vec::Zero());
   parcels_ = handshake::Parcels<Dim>(faces);
@@ -161,6 +164,10 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
     add_export(mpm, "ghost_nodes", {"mass", "momentum", "internal_energy"});
     mpm_ops_.push_back(Op::export_ghost);
   }
+  // Before the removal: the particles it takes lie outside cell k-w+1 anyway, and its
+  // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read).
+  add_export(mpm, "face_particles", {"mass", "position"});
+  mpm_ops_.push_back(Op::export_face_particles);
   if (plan.advance) {
     add_remove(mpm, "crossed", "mpm_zone");
     mpm_ops_.push_back(Op::remove);
@@ -374,9 +381,15 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
   mass.resize(n);
   momentum.resize(n);
   force.resize(n);
+  std::span<const double> push_volume;  // T's V_c until the MPM has told its face mass
+  if (have_face_mass_) {
+    handshake::face_push_volume<Dim>(face_mass_, strip_now_.rho, strip_layout_, push_volume_);
+    push_volume = push_volume_;
+  }
   handshake::interface_node_terms<Dim>({strip_now_.rho, strip_now_.momentum, strip_now_.energy},
                                        strip_now_.pressure, scene_.solver.mpm.reference_pressure,
-                                       strip_layout_, stencil_, geometry_, {mass, momentum, force});
+                                       strip_layout_, stencil_, geometry_, {mass, momentum, force},
+                                       push_volume);
   cosim::add_array(mpm, {"interface_nodes", "mass", {}, "kg"}, std::span<const double>(mass));
   cosim::add_array(mpm, {"interface_nodes", "momentum", {n, 3}, "kg*m/s"},
                    to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
@@ -480,6 +493,9 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
         have_ghost_source_ = true;
         break;
       }
+      case Op::export_face_particles:
+        read_face_particles(static_cast<std::size_t>(result.exported().count()), reply);
+        break;
       case Op::discard:
         traffic_.discarded = static_cast<std::size_t>(result.removed().removed());
         break;
@@ -523,6 +539,29 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
         break;
     }
   }
+}
+
+template <int Dim>
+void CfdmpStep<Dim>::read_face_particles(std::size_t n, const cosim::Message& reply) {
+  // Σ m_p per cell k-w+1: the zone's particles that resist the FDM's push (face_push_volume).
+  // Summed from the views: the count changes every injection, so no copy is kept.
+  const auto mass_view = cosim::view_array<double>(reply, "face_particles", "mass");
+  const auto position_view = cosim::view_array<double>(reply, "face_particles", "position");
+  const auto mass = mass_view.values(), position = position_view.values();
+  check_value_count(reply, kMpm, "face_particles", "mass", mass.size(), n);
+  check_value_count(reply, kMpm, "face_particles", "position", position.size(), 3 * n);
+  std::fill(face_mass_.begin(), face_mass_.end(), 0.0);
+  for (std::size_t p = 0; p < n; ++p) {
+    handshake::Index<Dim> cell{};
+    for (int k = 0; k < Dim; ++k) {  // clamped: a particle on the box's edge is the box's
+      const double x = position[3 * p + static_cast<std::size_t>(layout_.active[k])];
+      const auto i =
+          static_cast<std::int64_t>(std::floor((x - geometry_.origin(k)) / geometry_.spacing(k)));
+      cell[k] = std::clamp(i, face_cells_.lo[k], face_cells_.hi[k] - 1);
+    }
+    face_mass_[face_cells_.flat(cell)] += mass[p];
+  }
+  have_face_mass_ = true;
 }
 
 template <int Dim>

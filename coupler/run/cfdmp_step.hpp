@@ -6,7 +6,8 @@
 //   FDM: [apply deposit_cells ADD, apply ghost_cells SET, advance, export strip_cells,
 //         (export coupling_face: v1.1), (export fdm_owned), propose_dt]
 //   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
-//         remove "crossed" (left mpm_zone), (export mpm_zone), propose_dt]
+//         export face_particles, remove "crossed" (left mpm_zone), (export mpm_zone),
+//         propose_dt]
 // A step without advance (step 0, and the one before each output) keeps only the
 // applies of deposits, the exports and the proposals. While the MPM zone is
 // dormant (coupler/run/activation.hpp) only the FDM gets a request: advance,
@@ -108,6 +109,7 @@ class CfdmpStep {
     export_face,
     export_owned,
     export_ghost,
+    export_face_particles,
     discard,
     remove,
     export_particles,
@@ -131,6 +133,7 @@ class CfdmpStep {
   [[nodiscard]] Totals cell_totals(const cosim::Message& reply, const char* region,
                                    std::size_t count) const;
   void read_crossed(const cosim::Message& reply);
+  void read_face_particles(std::size_t n, const cosim::Message& reply);
   void add_audit_export(cosim::Message& fdm, const char* region) const;
   void add_cell_apply(cosim::Message& fdm, const char* region, cosim::v1::ApplyRegion::Mode mode);
   void add_face_fluxes(const handshake::Amounts<Dim>& returned);
@@ -143,6 +146,7 @@ class CfdmpStep {
   handshake::InterfaceStencil<Dim> stencil_;
   handshake::IndexBox<Dim> ghost_cells_;
   handshake::IndexBox<Dim> ghost_nodes_;
+  handshake::IndexBox<Dim> face_cells_;  ///< the cells k-w+1, C order = face cells
   handshake::IndexBox<Dim> deposit_box_;
   std::vector<std::size_t> corners_;
   std::vector<double> corner_support_;  // Σ N_Ic s_I per ghost cell (ghost_cells.hpp)
@@ -166,6 +170,9 @@ class CfdmpStep {
   std::vector<double> ghost_node_mass_, ghost_cell_energy_;
   std::vector<Vec> ghost_node_momentum_;
   bool have_ghost_source_ = false;
+  std::vector<double> face_mass_;  ///< per face cell: the MPM particles' mass in cell k-w+1
+  bool have_face_mass_ = false;
+  std::vector<double> push_volume_;  ///< per face cell: V of (4-9), face_push_volume
   std::vector<double> removed_mass_, removed_energy_;
   std::vector<Vec> removed_position_, removed_velocity_;
 

@@ -73,6 +73,8 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
                                    {"mass", "momentum", "internal_energy"});
   *mpm.add_regions() = make_region("interface_nodes", v1::REGION_KIND_NODES, layout.interface_nodes,
                                    {"mass", "momentum", "internal_force"});
+  *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
+                                   {"mass", "position"});
   *mpm.add_regions() = features.mpm_outflow
                            ? make_region("mpm_zone", v1::REGION_KIND_PARTICLES, layout.mpm_zone,
                                          {"mass", "velocity", "internal_energy", "outflow_mass",

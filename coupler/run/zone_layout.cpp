@@ -120,6 +120,8 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
                 " in a grid of " + std::to_string(n) + " cells");
   layout.ghost_nodes = nodes_of(layout.ghost_cells, layout.cells);
   layout.interface_nodes = along(nodes_of(whole, layout.cells), a, face, face + 1);
+  layout.face_cells =
+      layout.face_side > 0 ? along(whole, a, face, face + 1) : along(whole, a, face - 1, face);
   layout.coupling_face = along(whole, a, face, face + 1);
   return layout;
 }

@@ -46,6 +46,7 @@ struct ZoneLayout {
   WireBox deposit_cells;    ///< cells outside the face where crossing particles land
   WireBox ghost_nodes;      ///< corner nodes of the ghost cells
   WireBox interface_nodes;  ///< the node layer on the face
+  WireBox face_cells;       ///< the cells k-w+1: the MPM zone's cell layer on the face
   WireBox coupling_face;  ///< v1.1 FACES box: the faces at node `face` (one index along face_axis)
 };
 

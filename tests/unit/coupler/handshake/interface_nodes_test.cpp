@@ -142,6 +142,44 @@ TYPED_TEST(InterfaceNodes, Correction_conserves_momentum_for_any_strip_state) {
   }
 }
 
+// The FDM push with the MPM's face-cell mass (docs/coupler.md, Deviations):
+// face_push_volume is m_t / ρ of each outer cell, and (4-9) with it scales the
+// force by V / V_c while (4-7), (4-8) keep T's V_c.
+TEST(InterfaceNodes2D, Push_volume_is_the_face_mass_over_the_outer_density) {
+  const auto g = test::test_geometry<2>();
+  const ZoneFace face{0, 1};
+  const auto layout = make_strip_layout(IndexBox<2>{{3, 0}, {5, 4}}, face);
+  const std::size_t faces = layout.face_cells(), n = layout.box.count();
+  Strip<2> strip{std::vector<double>(n, 1.2), std::vector<Vec<2>>(n, Vec<2>(3.0, -1.0)),
+                 std::vector<double>(n, 0.0), std::vector<double>(n, 2e5)};
+  strip.rho[layout.outer[1]] = 2.4;
+  const std::vector<double> face_mass(faces, 0.6 * g.cell_volume);
+  std::vector<double> volume(faces);
+  face_push_volume<2>(face_mass, strip.rho, layout, volume);
+  for (std::size_t t = 0; t < faces; ++t)
+    EXPECT_DOUBLE_EQ(volume[t], 0.6 * g.cell_volume / (t == 1 ? 2.4 : 1.2)) << "face cell " << t;
+
+  const IndexBox<2> nodes{{4, 0}, {5, 5}};
+  const auto stencil = make_interface_stencil(layout, nodes);
+  const std::vector<double> full(faces, g.cell_volume), half(faces, 0.5 * g.cell_volume);
+  Added<2> t_as_printed(nodes.count()), with_full(nodes.count()), with_half(nodes.count());
+  interface_node_terms<2>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.0, layout,
+                          stencil, g, t_as_printed.outputs());
+  interface_node_terms<2>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.0, layout,
+                          stencil, g, with_full.outputs(), full);
+  interface_node_terms<2>({strip.rho, strip.momentum, strip.energy}, strip.pressure, 0.0, layout,
+                          stencil, g, with_half.outputs(), half);
+  for (std::size_t i = 0; i < nodes.count(); ++i) {
+    EXPECT_EQ(with_full.force[i], t_as_printed.force[i]);
+    EXPECT_LE((with_half.force[i] - 0.5 * t_as_printed.force[i]).norm(),
+              kTol * t_as_printed.force[i].norm());
+    EXPECT_EQ(with_half.mass[i], t_as_printed.mass[i]);
+    EXPECT_EQ(with_half.momentum[i], t_as_printed.momentum[i]);
+  }
+  std::vector<double> short_volume(faces - 1);
+  EXPECT_THROW(face_push_volume<2>(face_mass, strip.rho, layout, short_volume), Error);
+}
+
 TEST(InterfaceNodes2D, Node_box_must_lie_on_the_face) {
   const ZoneFace face{0, 1};
   const auto layout = make_strip_layout(IndexBox<2>{{3, 0}, {5, 4}}, face);

@@ -421,6 +421,53 @@ TYPED_TEST(ParticleInjection, A_parcel_with_no_internal_energy_left_goes_back_wh
   EXPECT_EQ(count_new_particles(pending, InjectionRule{reference_mass, reference_mass}, count), 0U);
 }
 
+// Flow turning back out while a parcel waits (acoustic case, docs/stability.md):
+// an outflow of a quarter of the parcel's mass takes back a quarter of each of
+// its amounts; cell k-w gets that share plus the (negative) crossed amounts,
+// zero mass, instead of the whole parcel at once.
+TYPED_TEST(ParticleInjection, Outflow_smaller_than_the_parcel_takes_back_its_share) {
+  constexpr int Dim = TypeParam::value;
+  const auto g = test::test_geometry<Dim>();
+  const ZoneFace face{0, 1};
+  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  const std::size_t faces = layout.face_cells();
+  Strip<Dim> strip(layout.box.count());
+  std::vector<double> pressure(layout.box.count(), 1e5);
+  for (std::size_t c = 0; c < layout.box.count(); ++c)
+    strip.set(c, 1.2, Vec<Dim>::Zero(), pressure[c]);
+  Parcels<Dim> pending(faces);
+  Vec<Dim> parcel_momentum = Vec<Dim>::Zero();
+  parcel_momentum(face.axis) = 4e-6;
+  for (std::size_t t = 0; t < faces; ++t) {
+    pending.mass[t] = 4e-7;
+    pending.momentum[t] = parcel_momentum;
+    pending.energy[t] = 1e-1;
+    pending.volume[t] = 4e-7 / 1.2;
+    pending.travel[t] = 1e-3;
+  }
+  FaceAmounts<Dim> returned(faces), crossed(faces);
+  const double dt = 1e-6, area = g.face_area(face.axis), m = -1e-7;
+  for (std::size_t t = 0; t < faces; ++t) {
+    crossed.mass[t] = m;
+    crossed.momentum[t] = Vec<Dim>::Zero();
+    crossed.momentum[t](face.axis) = m * -10 + 1e5 * area * dt;
+    crossed.energy[t] = -2e-2;
+  }
+  accumulate_crossed_amounts<Dim>({crossed.mass, crossed.momentum, crossed.energy}, strip.states(),
+                                  pressure, layout, g, dt, pending, returned.view());
+  for (std::size_t t = 0; t < faces; ++t) {
+    EXPECT_DOUBLE_EQ(pending.mass[t], 3e-7) << "face cell " << t;
+    EXPECT_DOUBLE_EQ(pending.momentum[t](face.axis), 3e-6);
+    EXPECT_DOUBLE_EQ(pending.energy[t], 7.5e-2);
+    EXPECT_DOUBLE_EQ(pending.volume[t], 3e-7 / 1.2);
+    EXPECT_DOUBLE_EQ(pending.travel[t], 7.5e-4);
+    EXPECT_EQ(returned.mass[t], 0.0);
+    // The share (1/4 of the parcel) plus the crossed amounts less p_f A Δt and p_f m/ρ_f.
+    EXPECT_NEAR(returned.momentum[t](face.axis), 1e-6 + m * -10, 1e-12 * 2e-6);
+    EXPECT_NEAR(returned.energy[t], 2.5e-2 - 2e-2 - 1e5 * m / 1.2, 1e-12 * 1e-2);
+  }
+}
+
 // Injected particles taken back out of the zone and deposited in their cell
 // k-w return exactly what the FDM fluxed: the round trip through both
 // transports is conservative, T (4-13) ... (4-21).

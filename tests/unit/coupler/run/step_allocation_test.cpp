@@ -63,6 +63,9 @@ std::string shape_of(const cosim::Message& message) {
     shape += std::to_string(op.op_case()) + ",";
   for (const auto& array : message.header.arrays()) {
     shape += array.group() + "/" + array.name() + ":";
+    // The face cell's particle count changes with each injection and removal; the
+    // step reads it into scratch already sized by larger batches.
+    if (array.group() == "face_particles") continue;
     for (const auto extent : array.shape()) shape += std::to_string(extent) + " ";
   }
   return shape;

@@ -139,6 +139,13 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
                              std::vector<double>(3 * nodes, 0.0));
             cosim::add_array(reply, {name, "internal_energy", {}, "J"},
                              std::vector<double>(cells, e));
+          } else if (name == "face_particles") {  // 2 per cell; 1D: the one face cell holds them
+            const auto n = static_cast<std::size_t>(2 * box_count(box, 0, 0));
+            result.mutable_exported()->set_count(n);
+            cosim::add_array(reply, {name, "mass", {}, "kg"},
+                             std::vector<double>(n, 0.5 * mpm.density * mpm.cell_volume));
+            cosim::add_array(reply, {name, "position", {n, 3}, "m"},
+                             std::vector<double>(3 * n, 0.0));
           } else {  // mpm_zone: 2 particles per cell
             const auto n = static_cast<std::size_t>(2 * box_count(box, 0, 0));
             result.mutable_exported()->set_count(n);

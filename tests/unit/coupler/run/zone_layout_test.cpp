@@ -39,6 +39,7 @@ TEST(ZoneLayout, Thesis_V6_regions) {
   EXPECT_EQ(box_text(l.ghost_cells), "[150, 153) x [0, 250) x [0, 1)");
   EXPECT_EQ(box_text(l.ghost_nodes), "[150, 154) x [0, 251) x [0, 1)");
   EXPECT_EQ(box_text(l.interface_nodes), "[145, 146) x [0, 251) x [0, 1)");
+  EXPECT_EQ(box_text(l.face_cells), "[145, 146) x [0, 250) x [0, 1)");
   EXPECT_EQ(box_text(l.fdm_owned), "[0, 145) x [0, 250) x [0, 1)");
   EXPECT_EQ(box_text(l.mpm_zone), "[145, 170) x [0, 250) x [0, 1)");
 }
@@ -57,6 +58,7 @@ TEST(ZoneLayout, Mpm_zone_below_the_face_mirrors_the_regions) {
   EXPECT_EQ(box_text(l.ghost_cells), "[27, 30) x [0, 1) x [0, 1)");
   EXPECT_EQ(box_text(l.ghost_nodes), "[27, 31) x [0, 1) x [0, 1)");
   EXPECT_EQ(box_text(l.fdm_owned), "[36, 100) x [0, 1) x [0, 1)");
+  EXPECT_EQ(box_text(l.face_cells), "[35, 36) x [0, 1) x [0, 1)");  // the inner strip cell
 }
 
 std::string layout_error(const std::string& text) {
