@@ -245,7 +245,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
           "Wallstedt & Guilkey 2008) strains half with the nodal v^n before the forces "
           "and half with the re-mapped v^{n+1} after, so that the pressure work matches "
           "the kinetic energy gained (strong shocks into cold gas, docs/stability.md); "
-          "only with solver.method mpm and without solver.mpm.contact")
+          "not with solver.mpm.contact nor geometry spherical")
       .optional("bulk_viscosity_quadratic", &MpmOptions::bulk_viscosity_quadratic,
                 Number("-", Range::at_least(0)),
                 "c0 of the artificial bulk viscosity q = rho l (c0 l d^2 - c1 c d) in compression "
