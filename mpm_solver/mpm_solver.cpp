@@ -884,7 +884,7 @@ void MpmSolver::update_particles(double dt) {
   const auto& g = grid_.grid();
   const bool active[3] = {g.is_active(0), g.is_active(1), g.is_active(2)};
   const double t1 = time_ + dt;
-  // USAVG strained the first half in strain_from_start_velocities.
+  // USAVG strained the first half in strain_first_half.
   const double strain_dt = settings_.update == config::MpmUpdate::usavg ? 0.5 * dt : dt;
   std::size_t collapsed = 0;
   leaving_.assign(ps.size(), 0);  // scratch here: marks collapsed particles

@@ -60,6 +60,7 @@ namespace mpfd::mpm {
 struct MpmSettings {
   double cfl = config::kMpmDefaultCfl;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
   config::ShapeFunction shape_function = config::ShapeFunction::linear;
+  /// MUSL when built by hand; a scene's default is usavg (config::MpmOptions, from_scene).
   config::MpmUpdate update = config::MpmUpdate::musl;
   double bulk_viscosity_quadratic = 1.5;  ///< c0
   double bulk_viscosity_linear = 0.06;    ///< c1

@@ -175,7 +175,7 @@ TEST(MpmSolver, CollapsedParticleErrorNamesTimeStepAndParticle) {
       "output: {interval: 1.0e-5}\n",
       "thin_air.yaml");
   MpmSettings usl = settings(ShapeFunction::linear, MpmUpdate::usl);
-  usl.cfl = 0.5;  // the CFL it was found at (the default is 0.25 since the stability map)
+  usl.cfl = 0.5;  // the CFL it was found at (the default is 0.2 since the stability map)
   MpmSolver solver(scene, usl);
   try {
     solver.advance_to(1.0e-5);
