@@ -314,6 +314,23 @@ void MpmSolver::mark_shared_nodes() {
   fields.compact();
 }
 
+double MpmSolver::internal_stress(std::size_t p, double (&sigma)[3][3]) const {
+  const auto& ps = particles_;
+  // sigma + p_ref I = s - (p + q - p_ref) I, tension positive. The particle
+  // sum of V_p grad N_I(x_p) vanishes only on the particles' initial lattice;
+  // off it a uniform p pushes the nodes (a negative stiffness ~ p / h^2 that
+  // makes still 2D air grow, docs/mpm.md), which p_ref, the ambient
+  // pressure, takes away.
+  const double pq = ps.pressure[p] + ps.bulk_viscosity[p] - settings_.reference_pressure;
+  const auto& d = ps.deviatoric_stress;
+  const double rows[3][3] = {{d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
+                             {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
+                             {d[kZX][p], d[kYZ][p], d[kZZ][p] - pq}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) sigma[i][j] = rows[i][j];
+  return ps.mass[p] / ps.density[p];
+}
+
 void MpmSolver::zero_stress_sums() {
   const std::size_t nodes = grid_.node_count();
   if (settings_.shear_damping > 0.0) {
@@ -324,39 +341,10 @@ void MpmSolver::zero_stress_sums() {
     for (auto& a : face_sums_) a.assign(nodes, 0.0);
 }
 
-template <class S, bool kContact>
-void MpmSolver::scatter_stress(std::size_t p, const double (&x)[3], const S& s) {
+template <class S>
+void MpmSolver::scatter_stress_sums(std::size_t p, const double (&x)[3], const S& s) {
   const auto& ps = particles_;
-  auto& cf = contact_fields_;
   const double m = ps.mass[p];
-  const double volume = m / ps.density[p];
-  const int body = ps.body[p];
-  // sigma + p_ref I = s - (p + q - p_ref) I, tension positive. The particle
-  // sum of V_p grad N_I(x_p) vanishes only on the particles' initial lattice;
-  // off it a uniform p pushes the nodes (a negative stiffness ~ p / h^2 that
-  // makes still 2D air grow, docs/mpm.md), which p_ref, the ambient
-  // pressure, takes away.
-  const double pq = ps.pressure[p] + ps.bulk_viscosity[p] - settings_.reference_pressure;
-  const auto& d = ps.deviatoric_stress;
-  const double sigma[3][3] = {{d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
-                              {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
-                              {d[kZX][p], d[kYZ][p], d[kZZ][p] - pq}};
-  for (int c = 0; c < S::kCount; ++c) {
-    const std::size_t node = s.node[c];
-    const double* gr = s.gradient[c];
-    double f[3];
-    for (int i = 0; i < 3; ++i) {
-      f[i] = -volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
-      grid_.force[i][node] += f[i];  // (2-10)
-    }
-    if constexpr (kContact) {
-      const std::int32_t k = cf.shared[node];
-      if (k >= 0) {
-        const std::size_t at = cf.at(k, body);
-        for (int i = 0; i < 3; ++i) cf.force[i][at] += f[i];
-      }
-    }
-  }
   if (settings_.shear_damping > 0.0) {
     // The lower corner of the particle's cell, as a stencil slot.
     int corner = 0;
@@ -385,7 +373,8 @@ void MpmSolver::scatter_stress(std::size_t p, const double (&x)[3], const S& s) 
               s.first[a] + extent[a] - 1 >= g.cells()[a] + 1;
     }
     if (!near) return;
-    const double c_s = std::sqrt(body_shear_modulus_[body] / ps.density[p]);
+    const double volume = m / ps.density[p];
+    const double c_s = std::sqrt(body_shear_modulus_[ps.body[p]] / ps.density[p]);
     for (int c = 0; c < S::kCount; ++c) {
       const double w = s.weight[c];
       face_sums_[0][s.node[c]] += w * volume;
@@ -400,47 +389,67 @@ void MpmSolver::particles_to_grid(Scatter what) {
   double* node_mass = grid_.mass.data();
   double* node_momentum[3] = {grid_.momentum[0].data(), grid_.momentum[1].data(),
                               grid_.momentum[2].data()};
+  double* node_force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
   auto& cf = contact_fields_;
   // Per-node sums only some scenes need, zeroed here (grow-only: no allocation).
   if (has_fixed_) fixed_mass_.assign(grid_.node_count(), 0.0);
-  const bool with_stress = what == Scatter::all;
-  if (with_stress) zero_stress_sums();
-  dispatch_kernel(settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
-                  [&](auto width, auto mask, auto with_contact) {
-                    using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-                    constexpr bool kContact = decltype(with_contact)::value;
-                    for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
-                      const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
-                      S s;
-                      double half_width[3];
-                      particle_half_width(p, half_width);
-                      compute_stencil(x, half_width, geometry_, grid_, s);
-                      const double m = ps.mass[p];
-                      const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
-                      const int body = ps.body[p];
-                      for (int c = 0; c < S::kCount; ++c) {
-                        const std::size_t node = s.node[c];
-                        const double wm = s.weight[c] * m;
-                        node_mass[node] += wm;                                            // (2-12)
-                        for (int i = 0; i < 3; ++i) node_momentum[i][node] += wm * v[i];  // (2-9)
-                        if constexpr (kContact) {
-                          const std::int32_t k = cf.shared[node];
-                          if (k >= 0) {
-                            const std::size_t at = cf.at(k, body);
-                            cf.mass[at] += wm;
-                            for (int i = 0; i < 3; ++i) {
-                              cf.momentum[i][at] += wm * v[i];
-                              cf.gradient[i][at] += m * s.gradient[c][i];  // numerator of (2-23)
-                            }
-                          }
-                        }
-                      }
-                      if (has_fixed_ && body_fixed_[body] != 0)
-                        for (int c = 0; c < S::kCount; ++c)
-                          fixed_mass_[s.node[c]] += s.weight[c] * m;
-                      if (with_stress) scatter_stress<S, kContact>(p, x, s);
-                    });
-                  });
+  if (what == Scatter::all) zero_stress_sums();
+  const auto scatter = [&](auto with_stress) {
+    constexpr bool kStress = decltype(with_stress)::value;
+    dispatch_kernel(
+        settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
+        [&](auto width, auto mask, auto with_contact) {
+          using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+          constexpr bool kContact = decltype(with_contact)::value;
+          for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
+            const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+            S s;
+            double half_width[3];
+            particle_half_width(p, half_width);
+            compute_stencil(x, half_width, geometry_, grid_, s);
+            const double m = ps.mass[p];
+            const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
+            const int body = ps.body[p];
+            double sigma[3][3] = {};
+            double volume = 0.0;
+            if constexpr (kStress) volume = internal_stress(p, sigma);
+            for (int c = 0; c < S::kCount; ++c) {
+              const std::size_t node = s.node[c];
+              const double wm = s.weight[c] * m;
+              node_mass[node] += wm;  // (2-12)
+              const double* gr = s.gradient[c];
+              double f[3] = {0.0, 0.0, 0.0};
+              for (int i = 0; i < 3; ++i) {
+                node_momentum[i][node] += wm * v[i];  // (2-9)
+                if constexpr (kStress) {
+                  f[i] =
+                      -volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
+                  node_force[i][node] += f[i];  // (2-10)
+                }
+              }
+              if constexpr (kContact) {
+                const std::int32_t k = cf.shared[node];
+                if (k >= 0) {
+                  const std::size_t at = cf.at(k, body);
+                  cf.mass[at] += wm;
+                  for (int i = 0; i < 3; ++i) {
+                    cf.momentum[i][at] += wm * v[i];
+                    cf.gradient[i][at] += m * gr[i];  // numerator of (2-23)
+                    if constexpr (kStress) cf.force[i][at] += f[i];
+                  }
+                }
+              }
+            }
+            if (has_fixed_ && body_fixed_[body] != 0)
+              for (int c = 0; c < S::kCount; ++c) fixed_mass_[s.node[c]] += s.weight[c] * m;
+            if constexpr (kStress) scatter_stress_sums(p, x, s);
+          });
+        });
+  };
+  if (what == Scatter::all)
+    scatter(std::true_type{});
+  else
+    scatter(std::false_type{});
 }
 
 void MpmSolver::integrate_nodes(double dt) {
@@ -839,6 +848,7 @@ void MpmSolver::strain_first_half(double dt, bool scatter_forces) {
   const double t_half = time_ + half;
   leaving_.assign(ps.size(), 0);
   if (scatter_forces) zero_stress_sums();
+  double* force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
   // One pass in the scatter's order: a particle's strain reads only v_I^n, and
   // its force, of the stress it has just reached, is summed in the same order
   // as a second full scatter would (same values, bit for bit); m_I and p_I
@@ -860,7 +870,18 @@ void MpmSolver::strain_first_half(double dt, bool scatter_forces) {
                 for (int j = 0; j < 3; ++j) l(i, j) += velocity[i][s.node[c]] * s.gradient[c][j];
             if (!strain_particle(p, l, half, t_half)) leaving_[p] = 1;
           }
-          if (scatter_forces) scatter_stress<S, false>(p, x, s);
+          if (!scatter_forces) return;
+          double sigma[3][3];
+          const double volume = internal_stress(p, sigma);
+          for (int c = 0; c < S::kCount; ++c) {
+            const double* gr = s.gradient[c];
+            for (int i = 0; i < 3; ++i) {  // (2-10), as particles_to_grid sums it
+              const double f =
+                  -volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
+              force[i][s.node[c]] += f;
+            }
+          }
+          scatter_stress_sums(p, x, s);
         });
       });
   const auto collapsed =

@@ -216,10 +216,11 @@ class MpmSolver {
   /// Zeroes the stress-dependent per-node sums of the scenes that need them
   /// (shear-mode damping's cells, non-reflecting faces').
   void zero_stress_sums();
-  /// Particle p's internal force (2-10) on its stencil's nodes (per body at
-  /// shared nodes), and its share of the stress-dependent sums zero_stress_sums zeroes.
-  template <class S, bool kContact>
-  void scatter_stress(std::size_t p, const double (&x)[3], const S& s);
+  /// Particle p's stress sigma + p_ref I of the internal force (2-10); returns its volume.
+  double internal_stress(std::size_t p, double (&sigma)[3][3]) const;
+  /// Particle p's share of the stress-dependent sums zero_stress_sums zeroes.
+  template <class S>
+  void scatter_stress_sums(std::size_t p, const double (&x)[3], const S& s);
   void integrate_nodes(double dt);
   /// Adds the shear-mode damping forces, T (2-47), over the cells holding particles.
   void add_shear_damping(double dt);

@@ -245,7 +245,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
           "Wallstedt & Guilkey 2008) strains half with the nodal v^n before the forces "
           "and half with the re-mapped v^{n+1} after, so that the pressure work matches "
           "the kinetic energy gained (strong shocks into cold gas, docs/stability.md), "
-          "at ~1.4x musl's cost per step. Left out: usavg, but musl with solver.mpm.contact "
+          "at ~1.5x musl's cost per step. Left out: usavg, but musl with solver.mpm.contact "
           "or geometry spherical, which have no usavg yet")
       .optional("bulk_viscosity_quadratic", &MpmOptions::bulk_viscosity_quadratic,
                 Number("-", Range::at_least(0)),
