@@ -30,13 +30,8 @@ ConstitutiveModel& MpmSolver::model_for(std::size_t material) {
 }
 
 void MpmSolver::refuse_unsupported_coupling(const char* what) const {
-  // USAVG's first half-strain is taken before the coupler's loads reach the nodes;
-  // contact keeps per-body nodal fields, and a coupler's loads act on the summed
-  // field only: both would be wrong.
-  if (settings_.update == config::MpmUpdate::usavg)
-    throw Error(std::string("mpm: ") + what +
-                " from a coupler with solver.mpm.update usavg is not supported (its first "
-                "half-strain does not see the coupler's nodes); expected musl or usl");
+  // Contact keeps per-body nodal fields, and a coupler's loads act on the summed
+  // field only: that would be wrong.
   if (contact_)
     throw Error(std::string("mpm: ") + what +
                 " from a coupler in a zone with contact between bodies is not supported yet; "
@@ -273,24 +268,38 @@ void MpmSolver::queue_node_load(const NodeLoad& load) {
   node_loads_.push_back(load);
 }
 
-void MpmSolver::apply_node_loads() {
+void MpmSolver::record_added_node_state() {
+  added_node_state_.clear();  // only this step's loads enter the remap
+  if (node_loads_.empty()) return;
   // node -> entry of added_node_state_ (-1: none), so n loads cost O(n), not O(n^2).
   if (added_slot_.size() < grid_.node_count()) added_slot_.resize(grid_.node_count(), -1);
-  const auto added = [this](std::size_t n) -> AddedNodeState& {
+  for (const NodeLoad& load : node_loads_) {
+    if (load.overwrite || load.quantity == NodeLoad::Quantity::force) continue;
+    const auto n = static_cast<std::size_t>(grid_.node(load.node[0] + grid_.offset()[0],
+                                                       load.node[1] + grid_.offset()[1],
+                                                       load.node[2] + grid_.offset()[2]));
     if (added_slot_[n] < 0) {
       added_slot_[n] = static_cast<std::int32_t>(added_node_state_.size());
       added_node_state_.push_back(AddedNodeState{n, 0.0, {0.0, 0.0, 0.0}});
     }
-    return added_node_state_[static_cast<std::size_t>(added_slot_[n])];
-  };
+    auto& added = added_node_state_[static_cast<std::size_t>(added_slot_[n])];
+    if (load.quantity == NodeLoad::Quantity::mass)
+      added.mass += load.value[0];
+    else
+      for (int a = 0; a < 3; ++a) added.momentum[a] += load.value[a];
+  }
+  for (const auto& entry : added_node_state_) added_slot_[entry.node] = -1;
+}
+
+void MpmSolver::apply_node_loads(NodeLoadPass pass) {
   for (const NodeLoad& load : node_loads_) {
+    const bool is_force = load.quantity == NodeLoad::Quantity::force;
+    if ((pass == NodeLoadPass::force && !is_force) ||
+        (pass == NodeLoadPass::mass_and_momentum && is_force))
+      continue;
     const auto n = static_cast<std::size_t>(grid_.node(load.node[0] + grid_.offset()[0],
                                                        load.node[1] + grid_.offset()[1],
                                                        load.node[2] + grid_.offset()[2]));
-    if (!load.overwrite && load.quantity == NodeLoad::Quantity::mass)
-      added(n).mass += load.value[0];
-    if (!load.overwrite && load.quantity == NodeLoad::Quantity::momentum)
-      for (int a = 0; a < 3; ++a) added(n).momentum[a] += load.value[a];
     if (load.quantity == NodeLoad::Quantity::mass) {
       grid_.mass[n] = load.overwrite ? load.value[0] : grid_.mass[n] + load.value[0];
       continue;
@@ -299,8 +308,6 @@ void MpmSolver::apply_node_loads() {
     for (int a = 0; a < 3; ++a)
       field[a][n] = load.overwrite ? load.value[a] : field[a][n] + load.value[a];
   }
-  for (const auto& entry : added_node_state_) added_slot_[entry.node] = -1;
-  node_loads_.clear();
 }
 
 void MpmSolver::restore(ParticleSet particles, std::span<const std::size_t> injected_body_materials,

@@ -195,14 +195,30 @@ void MpmSolver::advance(double dt) {
     throw Error("mpm: time step must be positive and finite, got " + std::to_string(dt));
   rebuild_grid();
   if (contact_) mark_shared_nodes();
-  particles_to_grid();
-  if (settings_.update == config::MpmUpdate::usavg) {
-    strain_from_start_velocities(dt);
-    grid_.allocate_nodes();  // the particles have not moved: same blocks, zeroed sums
-    particles_to_grid();     // the forces of the half-updated stress
+  const bool usavg = settings_.update == config::MpmUpdate::usavg;
+  // USAVG's forces are those of the half-updated stress: the first scatter
+  // sums only what the stress does not change.
+  particles_to_grid(usavg ? Scatter::mass_and_momentum : Scatter::all);
+  record_added_node_state();
+  if (!usavg) {
+    apply_node_loads(NodeLoadPass::all);
+  } else {
+    // v_I^n of the first half includes the FDM cells a coupler adds to the
+    // interface nodes, T (4-7), (4-8), as the remap's v^{n+1} does.
+    apply_node_loads(NodeLoadPass::mass_and_momentum);
+    // cpGIMP's domains follow F_aa, which the first half changes, and with
+    // them every weight: m_I and p_I are mapped again, not only f_I.
+    const bool weights_change = settings_.shape_function == config::ShapeFunction::cpgimp;
+    strain_first_half(dt, !weights_change);
+    if (weights_change) {
+      grid_.allocate_nodes();  // the particles have not moved: same blocks, zeroed sums
+      particles_to_grid(Scatter::all);
+      apply_node_loads(NodeLoadPass::all);
+    } else {
+      apply_node_loads(NodeLoadPass::force);
+    }
   }
-  added_node_state_.clear();  // only this step's loads enter the remap
-  if (!node_loads_.empty()) apply_node_loads();
+  node_loads_.clear();
   integrate_nodes(dt);
   if (settings_.update != config::MpmUpdate::usl) update_and_remap_velocities(dt);
   update_particles(dt);
@@ -298,7 +314,77 @@ void MpmSolver::mark_shared_nodes() {
   fields.compact();
 }
 
-void MpmSolver::particles_to_grid() {
+double MpmSolver::internal_stress(std::size_t p, double (&sigma)[3][3]) const {
+  const auto& ps = particles_;
+  // sigma + p_ref I = s - (p + q - p_ref) I, tension positive. The particle
+  // sum of V_p grad N_I(x_p) vanishes only on the particles' initial lattice;
+  // off it a uniform p pushes the nodes (a negative stiffness ~ p / h^2 that
+  // makes still 2D air grow, docs/mpm.md), which p_ref, the ambient
+  // pressure, takes away.
+  const double pq = ps.pressure[p] + ps.bulk_viscosity[p] - settings_.reference_pressure;
+  const auto& d = ps.deviatoric_stress;
+  const double rows[3][3] = {{d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
+                             {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
+                             {d[kZX][p], d[kYZ][p], d[kZZ][p] - pq}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) sigma[i][j] = rows[i][j];
+  return ps.mass[p] / ps.density[p];
+}
+
+void MpmSolver::zero_stress_sums() {
+  const std::size_t nodes = grid_.node_count();
+  if (settings_.shear_damping > 0.0) {
+    cell_mass_.assign(nodes, 0.0);
+    cell_sound_speed_.assign(nodes, 0.0);
+  }
+  if (non_reflecting_)
+    for (auto& a : face_sums_) a.assign(nodes, 0.0);
+}
+
+template <class S>
+void MpmSolver::scatter_stress_sums(std::size_t p, const double (&x)[3], const S& s) {
+  const auto& ps = particles_;
+  const double m = ps.mass[p];
+  if (settings_.shear_damping > 0.0) {
+    // The lower corner of the particle's cell, as a stencil slot.
+    int corner = 0;
+    const int extent[3] = {S::kNx, S::kNy, S::kNz};
+    for (int a = 2; a >= 0; --a) {
+      int i = 0;
+      if (extent[a] > 1)
+        i = static_cast<int>(
+                std::floor((x[a] - geometry_.origin[a]) * geometry_.inverse_spacing[a])) +
+            geometry_.offset[a] - s.first[a];
+      corner = corner * extent[a] + std::clamp(i, 0, extent[a] - 1);
+    }
+    const std::size_t node = s.node[corner];
+    cell_mass_[node] += m;
+    cell_sound_speed_[node] = std::max(cell_sound_speed_[node], ps.sound_speed[p]);
+  }
+  if (non_reflecting_) {
+    const auto& g = grid_.grid();
+    bool near = false;
+    const int extent[3] = {S::kNx, S::kNy, S::kNz};
+    for (int a = 0; a < 3; ++a) {
+      if (!g.is_active(a)) continue;
+      near |= faces_[static_cast<std::size_t>(2 * a)] == BoundaryKind::non_reflecting &&
+              s.first[a] <= 1;
+      near |= faces_[static_cast<std::size_t>(2 * a + 1)] == BoundaryKind::non_reflecting &&
+              s.first[a] + extent[a] - 1 >= g.cells()[a] + 1;
+    }
+    if (!near) return;
+    const double volume = m / ps.density[p];
+    const double c_s = std::sqrt(body_shear_modulus_[ps.body[p]] / ps.density[p]);
+    for (int c = 0; c < S::kCount; ++c) {
+      const double w = s.weight[c];
+      face_sums_[0][s.node[c]] += w * volume;
+      face_sums_[1][s.node[c]] += w * m * ps.sound_speed[p];
+      face_sums_[2][s.node[c]] += w * m * c_s;
+    }
+  }
+}
+
+void MpmSolver::particles_to_grid(Scatter what) {
   const auto& ps = particles_;
   double* node_mass = grid_.mass.data();
   double* node_momentum[3] = {grid_.momentum[0].data(), grid_.momentum[1].data(),
@@ -306,107 +392,64 @@ void MpmSolver::particles_to_grid() {
   double* node_force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
   auto& cf = contact_fields_;
   // Per-node sums only some scenes need, zeroed here (grow-only: no allocation).
-  const std::size_t nodes = grid_.node_count();
-  const bool damping = settings_.shear_damping > 0.0;
-  if (has_fixed_) fixed_mass_.assign(nodes, 0.0);
-  if (damping) {
-    cell_mass_.assign(nodes, 0.0);
-    cell_sound_speed_.assign(nodes, 0.0);
-  }
-  if (non_reflecting_)
-    for (auto& a : face_sums_) a.assign(nodes, 0.0);
-  const bool extras = has_fixed_ || damping || non_reflecting_;
-  const auto& g = grid_.grid();
-  bool near_face[6] = {};
-  for (int f = 0; f < 6; ++f)
-    near_face[f] =
-        g.is_active(f / 2) && faces_[static_cast<std::size_t>(f)] == BoundaryKind::non_reflecting;
-  dispatch_kernel(
-      settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
-      [&](auto width, auto mask, auto with_contact) {
-        using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-        constexpr bool kContact = decltype(with_contact)::value;
-        for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
-          const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
-          S s;
-          double half_width[3];
-          particle_half_width(p, half_width);
-          compute_stencil(x, half_width, geometry_, grid_, s);
-          const double m = ps.mass[p];
-          const double volume = m / ps.density[p];
-          const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
-          const int body = ps.body[p];
-          // sigma + p_ref I = s - (p + q - p_ref) I, tension positive. The particle
-          // sum of V_p grad N_I(x_p) vanishes only on the particles' initial lattice;
-          // off it a uniform p pushes the nodes (a negative stiffness ~ p / h^2 that
-          // makes still 2D air grow, docs/mpm.md), which p_ref, the ambient
-          // pressure, takes away.
-          const double pq = ps.pressure[p] + ps.bulk_viscosity[p] - settings_.reference_pressure;
-          const auto& d = ps.deviatoric_stress;
-          const double sigma[3][3] = {{d[kXX][p] - pq, d[kXY][p], d[kZX][p]},
-                                      {d[kXY][p], d[kYY][p] - pq, d[kYZ][p]},
-                                      {d[kZX][p], d[kYZ][p], d[kZZ][p] - pq}};
-          for (int c = 0; c < S::kCount; ++c) {
-            const std::size_t node = s.node[c];
-            const double wm = s.weight[c] * m;
-            node_mass[node] += wm;  // (2-12)
-            const double* gr = s.gradient[c];
-            double f[3];
-            for (int i = 0; i < 3; ++i) {
-              f[i] = -volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
-              node_momentum[i][node] += wm * v[i];  // (2-9)
-              node_force[i][node] += f[i];          // (2-10)
-            }
-            if constexpr (kContact) {
-              const std::int32_t k = cf.shared[node];
-              if (k >= 0) {
-                const std::size_t at = cf.at(k, body);
-                cf.mass[at] += wm;
-                for (int i = 0; i < 3; ++i) {
-                  cf.momentum[i][at] += wm * v[i];
-                  cf.gradient[i][at] += m * gr[i];  // numerator of (2-23)
-                  cf.force[i][at] += f[i];
+  if (has_fixed_) fixed_mass_.assign(grid_.node_count(), 0.0);
+  if (what == Scatter::all) zero_stress_sums();
+  const auto scatter = [&](auto with_stress) {
+    constexpr bool kStress = decltype(with_stress)::value;
+    dispatch_kernel(
+        settings_.shape_function != config::ShapeFunction::linear, axis_mask_, contact_,
+        [&](auto width, auto mask, auto with_contact) {
+          using S = Stencil<decltype(width)::value, decltype(mask)::value>;
+          constexpr bool kContact = decltype(with_contact)::value;
+          for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
+            const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+            S s;
+            double half_width[3];
+            particle_half_width(p, half_width);
+            compute_stencil(x, half_width, geometry_, grid_, s);
+            const double m = ps.mass[p];
+            const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
+            const int body = ps.body[p];
+            double sigma[3][3] = {};
+            double volume = 0.0;
+            if constexpr (kStress) volume = internal_stress(p, sigma);
+            for (int c = 0; c < S::kCount; ++c) {
+              const std::size_t node = s.node[c];
+              const double wm = s.weight[c] * m;
+              node_mass[node] += wm;  // (2-12)
+              const double* gr = s.gradient[c];
+              double f[3] = {0.0, 0.0, 0.0};
+              for (int i = 0; i < 3; ++i) {
+                node_momentum[i][node] += wm * v[i];  // (2-9)
+                if constexpr (kStress) {
+                  f[i] =
+                      -volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
+                  node_force[i][node] += f[i];  // (2-10)
+                }
+              }
+              if constexpr (kContact) {
+                const std::int32_t k = cf.shared[node];
+                if (k >= 0) {
+                  const std::size_t at = cf.at(k, body);
+                  cf.mass[at] += wm;
+                  for (int i = 0; i < 3; ++i) {
+                    cf.momentum[i][at] += wm * v[i];
+                    cf.gradient[i][at] += m * gr[i];  // numerator of (2-23)
+                    if constexpr (kStress) cf.force[i][at] += f[i];
+                  }
                 }
               }
             }
-          }
-          if (!extras) return;
-          if (has_fixed_ && body_fixed_[body] != 0)
-            for (int c = 0; c < S::kCount; ++c) fixed_mass_[s.node[c]] += s.weight[c] * m;
-          if (damping) {
-            // The lower corner of the particle's cell, as a stencil slot.
-            int corner = 0;
-            const int extent[3] = {S::kNx, S::kNy, S::kNz};
-            for (int a = 2; a >= 0; --a) {
-              int i = 0;
-              if (extent[a] > 1)
-                i = static_cast<int>(
-                        std::floor((x[a] - geometry_.origin[a]) * geometry_.inverse_spacing[a])) +
-                    geometry_.offset[a] - s.first[a];
-              corner = corner * extent[a] + std::clamp(i, 0, extent[a] - 1);
-            }
-            const std::size_t node = s.node[corner];
-            cell_mass_[node] += m;
-            cell_sound_speed_[node] = std::max(cell_sound_speed_[node], ps.sound_speed[p]);
-          }
-          if (non_reflecting_) {
-            bool near = false;
-            const int extent[3] = {S::kNx, S::kNy, S::kNz};
-            for (int a = 0; a < 3; ++a) {
-              near |= near_face[2 * a] && s.first[a] <= 1;
-              near |= near_face[2 * a + 1] && s.first[a] + extent[a] - 1 >= g.cells()[a] + 1;
-            }
-            if (!near) return;
-            const double c_s = std::sqrt(body_shear_modulus_[body] / ps.density[p]);
-            for (int c = 0; c < S::kCount; ++c) {
-              const double w = s.weight[c];
-              face_sums_[0][s.node[c]] += w * volume;
-              face_sums_[1][s.node[c]] += w * m * ps.sound_speed[p];
-              face_sums_[2][s.node[c]] += w * m * c_s;
-            }
-          }
+            if (has_fixed_ && body_fixed_[body] != 0)
+              for (int c = 0; c < S::kCount; ++c) fixed_mass_[s.node[c]] += s.weight[c] * m;
+            if constexpr (kStress) scatter_stress_sums(p, x, s);
+          });
         });
-      });
+  };
+  if (what == Scatter::all)
+    scatter(std::true_type{});
+  else
+    scatter(std::false_type{});
 }
 
 void MpmSolver::integrate_nodes(double dt) {
@@ -792,7 +835,7 @@ void MpmSolver::update_and_remap_velocities(double dt) {
   apply_face_conditions_to_remap();
 }
 
-void MpmSolver::strain_from_start_velocities(double dt) {
+void MpmSolver::strain_first_half(double dt, bool scatter_forces) {
   auto& ps = particles_;
   auto& velocity = grid_.remapped;  // scratch until the remap: v_I^n = p_I / m_I
   for_each_node(grid_.node_count(), [&](std::size_t n) {
@@ -804,28 +847,49 @@ void MpmSolver::strain_from_start_velocities(double dt) {
   const double half = 0.5 * dt;
   const double t_half = time_ + half;
   leaving_.assign(ps.size(), 0);
-  std::size_t collapsed = 0;
+  if (scatter_forces) zero_stress_sums();
+  double* force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
+  // One pass in the scatter's order: a particle's strain reads only v_I^n, and
+  // its force, of the stress it has just reached, is summed in the same order
+  // as a second full scatter would (same values, bit for bit); m_I and p_I
+  // have not changed and are not summed again.
   dispatch_stencil(
       settings_.shape_function != config::ShapeFunction::linear, axis_mask_,
       [&](auto width, auto mask) {
         using S = Stencil<decltype(width)::value, decltype(mask)::value>;
-        collapsed = parallel_sum(ps.size(), [&](std::size_t p) -> std::size_t {
-          if (has_fixed_ && body_fixed_[ps.body[p]] != 0) return 0;
+        for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
           const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
           S s;
           double half_width[3];
           particle_half_width(p, half_width);
           compute_stencil(x, half_width, geometry_, grid_, s);
-          Tensor3 l = Tensor3::Zero();
-          for (int c = 0; c < S::kCount; ++c)
-            for (int i = 0; i < 3; ++i)
-              for (int j = 0; j < 3; ++j) l(i, j) += velocity[i][s.node[c]] * s.gradient[c][j];
-          if (strain_particle(p, l, half, t_half)) return 0;
-          leaving_[p] = 1;
-          return 1;
+          if (!has_fixed_ || body_fixed_[ps.body[p]] == 0) {
+            Tensor3 l = Tensor3::Zero();
+            for (int c = 0; c < S::kCount; ++c)
+              for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) l(i, j) += velocity[i][s.node[c]] * s.gradient[c][j];
+            if (!strain_particle(p, l, half, t_half)) leaving_[p] = 1;
+          }
+          if (!scatter_forces) return;
+          double sigma[3][3];
+          const double volume = internal_stress(p, sigma);
+          for (int c = 0; c < S::kCount; ++c) {
+            const double* gr = s.gradient[c];
+            for (int i = 0; i < 3; ++i) {  // (2-10), as particles_to_grid sums it
+              const double f =
+                  -volume * (sigma[i][0] * gr[0] + sigma[i][1] * gr[1] + sigma[i][2] * gr[2]);
+              force[i][s.node[c]] += f;
+            }
+          }
+          scatter_stress_sums(p, x, s);
         });
       });
+  const auto collapsed =
+      static_cast<std::size_t>(std::count(leaving_.begin(), leaving_.end(), std::uint8_t{1}));
   if (collapsed > 0) throw_collapsed(collapsed, t_half);
+  for_each_node(grid_.node_count(), [&](std::size_t n) {
+    for (int a = 0; a < 3; ++a) velocity[a][n] = 0.0;  // the remap sums into it
+  });
 }
 
 void MpmSolver::update_particles(double dt) {
@@ -841,7 +905,7 @@ void MpmSolver::update_particles(double dt) {
   const auto& g = grid_.grid();
   const bool active[3] = {g.is_active(0), g.is_active(1), g.is_active(2)};
   const double t1 = time_ + dt;
-  // USAVG strained the first half in strain_from_start_velocities.
+  // USAVG strained the first half in strain_first_half.
   const double strain_dt = settings_.update == config::MpmUpdate::usavg ? 0.5 * dt : dt;
   std::size_t collapsed = 0;
   leaving_.assign(ps.size(), 0);  // scratch here: marks collapsed particles

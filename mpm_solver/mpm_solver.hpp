@@ -27,11 +27,14 @@
 // and 3: after (2-9)-(2-12) have mapped the particles, before (2-13). Without
 // them a step is the standalone step, bit for bit.
 //
-// USAVG (Nairn 2003; Wallstedt & Guilkey 2008) adds, after step 2,
-// strain_from_start_velocities(): half the strain increment from v_I^n = p_I / m_I,
-// dt / 2, then step 2 again for the forces of the half-updated stress; step 6
-// then strains with the other half, from the step-5 velocities. The pressure work
-// is then sigma^{n+1/2} : (v^n + v^{n+1}) / 2, what the kinetic energy gained.
+// USAVG (Nairn 2003; Wallstedt & Guilkey 2008): step 2 sums only m_I and p_I;
+// the coupler's mass and momentum loads are added; then strain_first_half():
+// half the strain increment from v_I^n = p_I / m_I, dt / 2, and in the same
+// particle pass the forces f_I of the half-updated stress (the coupler's force
+// loads follow; with cpGIMP, whose weights follow the strain, step 2 is redone
+// whole instead); step 6 then strains with the other half, from the step-5
+// velocities. The pressure work is then sigma^{n+1/2} : (v^n + v^{n+1}) / 2,
+// what the kinetic energy gained.
 //
 // USL skips steps 4 and 5 and does (2-15) in step 6. All weights are N^n (the
 // particles' positions at the start of the step). Nothing is allocated inside a
@@ -57,6 +60,7 @@ namespace mpfd::mpm {
 struct MpmSettings {
   double cfl = config::kMpmDefaultCfl;  ///< dt = cfl h_min / max_p (c_p + |v_p|)
   config::ShapeFunction shape_function = config::ShapeFunction::linear;
+  /// MUSL when built by hand; a scene's default is usavg (config::MpmOptions, from_scene).
   config::MpmUpdate update = config::MpmUpdate::musl;
   double bulk_viscosity_quadratic = 1.5;  ///< c0
   double bulk_viscosity_linear = 0.06;    ///< c1
@@ -204,7 +208,19 @@ class MpmSolver {
   /// GIMP half-widths of particle p per axis [grid units]: its body's, times F_aa for cpGIMP.
   void particle_half_width(std::size_t p, double half_width[3]) const;
   void mark_shared_nodes();
-  void particles_to_grid();
+  /// What particles_to_grid sums: everything, or (USAVG's first scatter) only
+  /// what the stress does not change: m_I, p_I, the contact fields' mass,
+  /// momentum and mass gradient, the fixed particle sets' mass.
+  enum class Scatter { all, mass_and_momentum };
+  void particles_to_grid(Scatter what = Scatter::all);
+  /// Zeroes the stress-dependent per-node sums of the scenes that need them
+  /// (shear-mode damping's cells, non-reflecting faces').
+  void zero_stress_sums();
+  /// Particle p's stress sigma + p_ref I of the internal force (2-10); returns its volume.
+  double internal_stress(std::size_t p, double (&sigma)[3][3]) const;
+  /// Particle p's share of the stress-dependent sums zero_stress_sums zeroes.
+  template <class S>
+  void scatter_stress_sums(std::size_t p, const double (&x)[3], const S& s);
   void integrate_nodes(double dt);
   /// Adds the shear-mode damping forces, T (2-47), over the cells holding particles.
   void add_shear_damping(double dt);
@@ -218,8 +234,10 @@ class MpmSolver {
   void apply_node_constraints(double dt);
   void apply_face_conditions_to_remap();
   void update_and_remap_velocities(double dt);
-  /// USAVG's first half: strain, density and stress with dt / 2 from v_I^n.
-  void strain_from_start_velocities(double dt);
+  /// USAVG's first half: strain, density and stress with dt / 2 from v_I^n
+  /// (with the coupler's mass and momentum), and with `scatter_forces` the
+  /// internal forces of the half-updated stress in the same particle pass.
+  void strain_first_half(double dt, bool scatter_forces);
   void update_particles(double dt);
   /// Strain increment (2-18), spin (2-19), density (2-20), bulk viscosity and the
   /// constitutive model (2-21) of particle p over `dt` from its velocity gradient
@@ -244,10 +262,17 @@ class MpmSolver {
   ConstitutiveModel& model_for(std::size_t material);
   /// The body injected particles of `material` join, made on first use.
   std::uint16_t injected_body(std::size_t material);
-  /// Throws mpfd::Error naming `what` when the zone has contact or runs USAVG (neither
-  /// supports a coupler's loads yet).
+  /// Throws mpfd::Error naming `what` when the zone has contact (which does not
+  /// support a coupler's loads yet).
   void refuse_unsupported_coupling(const char* what) const;
-  void apply_node_loads();
+  /// Which queued loads apply_node_loads applies: USAVG takes the mass and
+  /// momentum loads before its first half-strain and the force loads after
+  /// its force scatter; MUSL and USL take all at once.
+  enum class NodeLoadPass { all, mass_and_momentum, force };
+  /// Adds the queued loads of `pass` to (or sets) the nodal sums.
+  void apply_node_loads(NodeLoadPass pass);
+  /// Keeps the mass and momentum the queued loads add, for the remap: once a step.
+  void record_added_node_state();
   template <class Fn>
   void for_each_face_node(const Fn& fn) const;
 

@@ -15,8 +15,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# Each solver's default time.cfl (common/config/scene.hpp); CFDMP runs both, its MPM at 0.25.
-DEFAULT_CFL = {"fdm": 0.5, "mpm_linear": 0.25, "mpm_gimp": 0.25, "cfdmp": 0.25}
+# Each solver's default time.cfl (common/config/scene.hpp); CFDMP runs both, its MPM at 0.2.
+DEFAULT_CFL = {"fdm": 0.5, "mpm_linear": 0.2, "mpm_gimp": 0.2, "cfdmp": 0.2}
 
 
 def read(path):

@@ -199,11 +199,7 @@ void check_mpm_only(const Scene& s, Diagnostics& d) {
                 num(s.solver.mpm.reference_pressure));
   }
   // usavg's first half-strain uses the summed nodal v^n: per-body contact fields
-  // and a coupler's node loads and injected particles are not in it.
-  if (s.solver.mpm.update == MpmUpdate::usavg && s.solver.method != Method::mpm)
-    d.error("solver.mpm.update",
-            "usavg is for solver.method mpm only (fdm runs no MPM; under cfdmp and afdmp the "
-            "coupler's node loads are not in its first half-strain); expected musl or usl");
+  // are not in it.
   if (s.solver.mpm.update == MpmUpdate::usavg && s.solver.mpm.contact)
     d.error("solver.mpm.update",
             "usavg is not supported with solver.mpm.contact yet; expected musl or usl, or "

@@ -18,7 +18,7 @@ std::shared_ptr<const Table<TimeControl>> time_table() {
   auto t = table<TimeControl>("time", "When the run ends and how big its steps may be.");
   t->required("end", &TimeControl::end, Number("s", Range::above(0)), "end time")
       .optional("cfl", &TimeControl::cfl, Number("-", Range::open_closed(0, 1)),
-                "Courant number of both solvers; absent: 0.5 for the FDM, 0.25 for the MPM "
+                "Courant number of both solvers; absent: 0.5 for the FDM, 0.2 for the MPM "
                 "(docs/stability.md)")
       .optional("max_steps", &TimeControl::max_steps, Integer(Range::at_least(1)),
                 "the run stops with an error after this many steps");
@@ -244,8 +244,9 @@ std::shared_ptr<const Table<Solver>> solver_table() {
           "(2-17); usl strains with the nodal v^{n+1}; usavg (Nairn 2003, CMES 4(6); "
           "Wallstedt & Guilkey 2008) strains half with the nodal v^n before the forces "
           "and half with the re-mapped v^{n+1} after, so that the pressure work matches "
-          "the kinetic energy gained (strong shocks into cold gas, docs/stability.md); "
-          "only with solver.method mpm and without solver.mpm.contact")
+          "the kinetic energy gained (strong shocks into cold gas, docs/stability.md), "
+          "at ~1.5x musl's cost per step. Left out: usavg, but musl with solver.mpm.contact "
+          "or geometry spherical, which have no usavg yet")
       .optional("bulk_viscosity_quadratic", &MpmOptions::bulk_viscosity_quadratic,
                 Number("-", Range::at_least(0)),
                 "c0 of the artificial bulk viscosity q = rho l (c0 l d^2 - c1 c d) in compression "

@@ -13,19 +13,20 @@ std::string number(double value) {
   return text;
 }
 
-/// The `solver:` line; CFDMP also needs `zones`, which the caller writes.
+/// The `solver:` line; CFDMP also needs `zones`, which the caller writes. The MPM's
+/// update is left to its default (usavg), so that the CFL map is the default's.
 std::string solver_section(Solver solver) {
   switch (solver) {
     case Solver::fdm:
       return "solver: {method: fdm}\n";
     case Solver::mpm_linear:
-      return "solver: {method: mpm, mpm: {shape_function: linear, update: musl}}\n";
+      return "solver: {method: mpm, mpm: {shape_function: linear}}\n";
     case Solver::mpm_gimp:
-      return "solver: {method: mpm, mpm: {shape_function: gimp, update: musl}}\n";
+      return "solver: {method: mpm, mpm: {shape_function: gimp}}\n";
     case Solver::cfdmp:
       break;
   }
-  return "solver: {method: cfdmp, mpm: {shape_function: linear, update: musl}}\n";
+  return "solver: {method: cfdmp, mpm: {shape_function: linear}}\n";
 }
 
 /// The time section: end time and, if given, the CFL.

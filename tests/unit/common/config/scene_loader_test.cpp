@@ -44,7 +44,7 @@ TEST(SceneLoader, Defaults_fill_what_the_scene_leaves_out) {
   const Scene s = parse_scene(kMinimalScene, "air.yaml");
   EXPECT_FALSE(s.time.cfl.has_value());
   EXPECT_EQ(s.time.fdm_cfl(), 0.5);
-  EXPECT_EQ(s.time.mpm_cfl(), 0.25);
+  EXPECT_EQ(s.time.mpm_cfl(), 0.2);
   EXPECT_EQ(s.time.max_steps, 1000000);
   EXPECT_FALSE(s.zones.has_value());
   EXPECT_TRUE(std::holds_alternative<NoStrength>(s.materials[0].strength));
@@ -58,7 +58,7 @@ TEST(SceneLoader, Defaults_fill_what_the_scene_leaves_out) {
   EXPECT_EQ(s.solver.method, Method::fdm);
   EXPECT_EQ(s.solver.fdm.artificial_viscosity, 1.0);
   EXPECT_EQ(s.solver.mpm.shape_function, ShapeFunction::linear);
-  EXPECT_EQ(s.solver.mpm.update, MpmUpdate::musl);
+  EXPECT_EQ(s.solver.mpm.update, MpmUpdate::usavg);
   EXPECT_EQ(s.solver.mpm.gravity, (Vec3{0, 0, 0}));
   EXPECT_EQ(s.solver.mpm.shear_damping, 0.0);
   EXPECT_FALSE(s.solver.mpm.contact.has_value());
@@ -85,6 +85,19 @@ TEST(SceneLoader, Mpm_physics_keys_arrive_in_the_typed_scene) {
   ASSERT_TRUE(plain.solver.mpm.contact.has_value());
   EXPECT_EQ(plain.solver.mpm.contact->friction, 0.0);
   EXPECT_FALSE(plain.solver.mpm.contact->normal_body.has_value());
+}
+
+// usavg is the default only where it runs: with contact a scene that leaves
+// solver.mpm.update out gets musl; one that names it keeps its choice.
+TEST(SceneLoader, Update_defaults_to_usavg_and_to_musl_with_contact) {
+  const auto update_of = [](const std::string& mpm) {
+    return parse_scene(kMinimalScene + "solver: {method: mpm, mpm: {" + mpm + "}}\n", "mpm.yaml")
+        .solver.mpm.update;
+  };
+  EXPECT_EQ(update_of(""), MpmUpdate::usavg);
+  EXPECT_EQ(update_of("contact: {}"), MpmUpdate::musl);
+  EXPECT_EQ(update_of("contact: {}, update: usl"), MpmUpdate::usl);
+  EXPECT_EQ(update_of("update: musl"), MpmUpdate::musl);
 }
 
 TEST(SceneLoader, Every_section_arrives_in_the_typed_scene) {

@@ -49,6 +49,7 @@ void expect_one(const std::string& yaml, const std::string& path, const std::str
 TEST(SphericalGeometryChecks, Seed_S_case_is_accepted) {
   const Scene s = parse_scene(scene(), "underwater.yaml");
   EXPECT_EQ(s.domain.geometry, Geometry::spherical);
+  EXPECT_EQ(s.solver.mpm.update, MpmUpdate::musl);  // the default here: no usavg in 1D spherical
   const Scene plain = parse_scene(kMinimalScene, "tube.yaml");
   EXPECT_EQ(plain.domain.geometry, Geometry::cartesian);
 }
