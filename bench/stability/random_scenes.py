@@ -102,7 +102,8 @@ def generate(seed, steps):
     }
     shape_function = rng.choice(["linear", "gimp", "cpgimp"])
     if method in ("mpm", "cfdmp"):
-        scene["solver"]["mpm"] = {"shape_function": shape_function, "update": "musl"}
+        # The update scheme is left to its default (usavg, the scheme users get).
+        scene["solver"]["mpm"] = {"shape_function": shape_function}
     if method == "cfdmp":
         w = 5
         # The FDM zone ends w cells past the face and its 3 ghost layers must fit in the grid.
