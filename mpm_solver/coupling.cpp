@@ -112,7 +112,7 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
   }
   home_slot_.reserve(particles_.size());  // the step's scratch: sized here, not in the step
   leaving_.reserve(particles_.size());
-  compute_stable_dt();
+  compute_stable_dt(first);  // the others have not changed since the last full pass
 }
 
 ParticleBatch MpmSolver::remove_particles(std::span<const std::uint8_t> flags) {
@@ -121,8 +121,10 @@ ParticleBatch MpmSolver::remove_particles(std::span<const std::uint8_t> flags) {
   out.resize(static_cast<std::size_t>(
       std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; })));
   std::size_t i = 0;
+  double fastest_removed = 0.0;
   for (std::size_t p = 0; p < ps.size(); ++p) {
     if (flags[p] == 0) continue;
+    fastest_removed = std::max(fastest_removed, signal_speed(p));
     out.id[i] = ps.id[p];
     for (std::size_t a = 0; a < 3; ++a) {
       out.position[3 * i + a] = ps.position[a][p];
@@ -139,7 +141,9 @@ ParticleBatch MpmSolver::remove_particles(std::span<const std::uint8_t> flags) {
   }
   if (i > 0) {
     ps.remove_flagged(flags);
-    compute_stable_dt();
+    // The step changes only if the fastest particle left (a full pass per
+    // removal and per injection was 1 % of V6's CPU time at h = 2 mm).
+    if (!(fastest_removed < fastest_speed_)) compute_stable_dt();
   }
   return out;
 }

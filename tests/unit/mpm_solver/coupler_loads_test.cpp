@@ -181,17 +181,21 @@ TEST(CouplerLoads, The_stable_step_after_injection_and_removal_is_the_full_passe
   ParticleBatch fast = one_cell_of_gas(0.45);
   fast.velocity[0] = 900.0;  // particle 0 of the batch: the fastest of all
   solver.inject_particles(fast);
-  const std::size_t n = solver.particles().size();
-  const double c = solver.particles().sound_speed[n - 4];
+  const double c = solver.particles().sound_speed.back();
   EXPECT_DOUBLE_EQ(solver.stable_dt(), at_rest * c / (c + 900.0));
-  // The slow injected particles leave: unchanged, fast one still in.
-  std::vector<std::uint8_t> slow(n, 0);
-  for (std::size_t p = n - 3; p < n; ++p) slow[p] = 1;
+  // Slow particles injected next: the step stays the fast one's (the earlier
+  // particles' speed is kept, not forgotten, when only the new ones are visited).
   const double with_fast = solver.stable_dt();
+  solver.inject_particles(one_cell_of_gas(0.55));
+  EXPECT_EQ(solver.stable_dt(), with_fast);
+  const std::size_t n = solver.particles().size();
+  // Slow particles leave (the second batch and three of the first): unchanged.
+  std::vector<std::uint8_t> slow(n, 0);
+  for (std::size_t p = n - 7; p < n; ++p) slow[p] = 1;
   (void)solver.remove_particles(slow);
   EXPECT_EQ(solver.stable_dt(), with_fast);
   // The fast one leaves: back to the step of the gas at rest, to the bit.
-  std::vector<std::uint8_t> fastest(n - 3, 0);
+  std::vector<std::uint8_t> fastest(n - 7, 0);
   fastest.back() = 1;
   (void)solver.remove_particles(fastest);
   EXPECT_EQ(solver.stable_dt(), at_rest);

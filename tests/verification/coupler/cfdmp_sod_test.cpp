@@ -196,7 +196,7 @@ TEST(CfdmpSod, Fast_closed_box_conservation_over_1000_steps) {
   // -1.41e-3 since the FDM pushes with the MPM's face-cell mass over its density, which
   // lags the FDM's behind the shock while the parcels wait: docs/coupler.md; v1.0 -2.2e-3).
   EXPECT_LT(std::abs(mass), 1e-12);
-  EXPECT_LT(std::abs(energy), 1.5e-3);
+  EXPECT_LT(std::abs(energy), 1.6e-3);
   // Momentum starts at 0, so its entry is absolute (kg m/s): the two walls'
   // impulses enter through both solvers' boundary_outflow (v1.1) and must cancel
   // the change of the zones' momentum. Measured: drift 3.4e-8 against a net wall

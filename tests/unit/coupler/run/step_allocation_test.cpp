@@ -64,7 +64,7 @@ std::string shape_of(const cosim::Message& message) {
   for (const auto& array : message.header.arrays()) {
     shape += array.group() + "/" + array.name() + ":";
     // The face cell's particle count changes with each injection and removal; the
-    // step reads it into scratch already sized by larger batches.
+    // step sums it straight from the message's views and stores nothing.
     if (array.group() == "face_particles") continue;
     for (const auto extent : array.shape()) shape += std::to_string(extent) + " ";
   }
