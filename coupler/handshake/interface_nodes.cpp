@@ -90,7 +90,8 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
 
 template <int Dim>
 void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
-                      const StripLayout<Dim>& layout, std::span<double> volume) {
+                      const StripLayout<Dim>& layout, double cell_volume,
+                      std::span<double> volume) {
   const std::size_t n = layout.face_cells();
   require_length(face_mass.size(), n, "face push volume", "face_mass");
   require_length(strip_rho.size(), layout.box.count(), "face push volume", "strip rho");
@@ -100,7 +101,9 @@ void face_push_volume(std::span<const double> face_mass, std::span<const double>
     if (!(rho > 0))
       throw Error("face push volume: face cell " + std::to_string(t) +
                   " needs an outer cell with rho > 0, got " + shortest_text(rho));
-    volume[t] = face_mass[t] / rho;
+    // No particle mass in the face cell (an emptied zone edge): nothing resists,
+    // and a zero volume would switch the FDM's pressure off there; T's V_c.
+    volume[t] = face_mass[t] > 0 ? face_mass[t] / rho : cell_volume;
   }
 }
 
@@ -112,7 +115,7 @@ void face_push_volume(std::span<const double> face_mass, std::span<const double>
                                           const CellGeometry<Dim>&, const NodeOutputs<Dim>&,       \
                                           std::span<const double>);                                \
   template void face_push_volume<Dim>(std::span<const double>, std::span<const double>,            \
-                                      const StripLayout<Dim>&, std::span<double>);
+                                      const StripLayout<Dim>&, double, std::span<double>);
 MPFD_INSTANTIATE_INTERFACE(1)
 MPFD_INSTANTIATE_INTERFACE(2)
 MPFD_INSTANTIATE_INTERFACE(3)

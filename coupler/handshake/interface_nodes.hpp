@@ -63,9 +63,10 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
 /// with p V_c, more than the zone's particles next to the face resist with
 /// once they are compressed (their mass is fixed, the FDM cell's grows). So
 /// per face cell V = m_t / ρ_outer, m_t the MPM particles' mass in cell
-/// k-w+1 (region face_particles). Writes `volume` (one per face cell).
+/// k-w+1 (region face_particles); V_c = `cell_volume` where that cell holds no
+/// particle mass. Writes `volume` (one per face cell).
 template <int Dim>
 void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
-                      const StripLayout<Dim>& layout, std::span<double> volume);
+                      const StripLayout<Dim>& layout, double cell_volume, std::span<double> volume);
 
 }  // namespace mpfd::coupler::handshake

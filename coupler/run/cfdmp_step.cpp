@@ -383,7 +383,8 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
   force.resize(n);
   std::span<const double> push_volume;  // T's V_c until the MPM has told its face mass
   if (have_face_mass_) {
-    handshake::face_push_volume<Dim>(face_mass_, strip_now_.rho, strip_layout_, push_volume_);
+    handshake::face_push_volume<Dim>(face_mass_, strip_now_.rho, strip_layout_,
+                                     geometry_.cell_volume, push_volume_);
     push_volume = push_volume_;
   }
   handshake::interface_node_terms<Dim>({strip_now_.rho, strip_now_.momentum, strip_now_.energy},

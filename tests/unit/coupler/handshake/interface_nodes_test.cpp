@@ -153,11 +153,13 @@ TEST(InterfaceNodes2D, Push_volume_is_the_face_mass_over_the_outer_density) {
   Strip<2> strip{std::vector<double>(n, 1.2), std::vector<Vec<2>>(n, Vec<2>(3.0, -1.0)),
                  std::vector<double>(n, 0.0), std::vector<double>(n, 2e5)};
   strip.rho[layout.outer[1]] = 2.4;
-  const std::vector<double> face_mass(faces, 0.6 * g.cell_volume);
+  std::vector<double> face_mass(faces, 0.6 * g.cell_volume);
+  face_mass[2] = 0.0;  // an emptied face cell: T's V_c, not a pressure switched off
   std::vector<double> volume(faces);
-  face_push_volume<2>(face_mass, strip.rho, layout, volume);
+  face_push_volume<2>(face_mass, strip.rho, layout, g.cell_volume, volume);
   for (std::size_t t = 0; t < faces; ++t)
-    EXPECT_DOUBLE_EQ(volume[t], 0.6 * g.cell_volume / (t == 1 ? 2.4 : 1.2)) << "face cell " << t;
+    EXPECT_DOUBLE_EQ(volume[t], t == 2 ? g.cell_volume : 0.6 * g.cell_volume / (t == 1 ? 2.4 : 1.2))
+        << "face cell " << t;
 
   const IndexBox<2> nodes{{4, 0}, {5, 5}};
   const auto stencil = make_interface_stencil(layout, nodes);
@@ -177,7 +179,8 @@ TEST(InterfaceNodes2D, Push_volume_is_the_face_mass_over_the_outer_density) {
     EXPECT_EQ(with_half.momentum[i], t_as_printed.momentum[i]);
   }
   std::vector<double> short_volume(faces - 1);
-  EXPECT_THROW(face_push_volume<2>(face_mass, strip.rho, layout, short_volume), Error);
+  EXPECT_THROW(face_push_volume<2>(face_mass, strip.rho, layout, g.cell_volume, short_volume),
+               Error);
 }
 
 TEST(InterfaceNodes2D, Node_box_must_lie_on_the_face) {
