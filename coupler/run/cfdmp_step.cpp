@@ -440,13 +440,10 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
                              strip_now_.momentum);
       // Not while the zone sleeps: the FDM owns its cells then and steps at its own CFL.
       strip_dt_ = std::numeric_limits<double>::infinity();
-      if (plan.mpm) {
-        double spacing = std::numeric_limits<double>::infinity();
-        for (int a = 0; a < Dim; ++a) spacing = std::min(spacing, geometry_.spacing(a));
+      if (plan.mpm)
         strip_dt_ = strip_step_limit<Dim>(strip_now_.rho, strip_now_.momentum, strip_now_.energy,
                                           strip_now_.pressure, injected_material_, scene_,
-                                          scene_.time.mpm_cfl(), spacing);
-      }
+                                          scene_.time.mpm_cfl(), geometry_.spacing.minCoeff());
       if (rule_.reference_mass == 0.0) {
         // m_e of T (4-15): the mass of a zone particle at the densest inner strip cell.
         double rho_max = 0;

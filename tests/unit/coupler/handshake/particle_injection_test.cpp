@@ -32,6 +32,12 @@ struct Strip {
     momentum[c] = r * v;
     energy[c] = p / (kGamma - 1) + 0.5 * r * v.squaredNorm();
   }
+  /// n cells of gas at rest at density r and pressure p.
+  static Strip at_rest(std::size_t n, double r, double p) {
+    Strip strip(n);
+    for (std::size_t c = 0; c < n; ++c) strip.set(c, r, Vec<Dim>::Zero(), p);
+    return strip;
+  }
 };
 
 template <int Dim>
@@ -392,10 +398,8 @@ TYPED_TEST(ParticleInjection, A_parcel_with_no_internal_energy_left_goes_back_wh
   const ZoneFace face{0, 1};
   const auto layout = make_strip_layout(strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
-  Strip<Dim> strip(layout.box.count());
-  std::vector<double> pressure(layout.box.count(), 2e7);
-  for (std::size_t c = 0; c < layout.box.count(); ++c)
-    strip.set(c, 1.2, Vec<Dim>::Zero(), pressure[c]);
+  const auto strip = Strip<Dim>::at_rest(layout.box.count(), 1.2, 2e7);
+  const std::vector<double> pressure(layout.box.count(), 2e7);
   FaceAmounts<Dim> returned(faces), crossed(faces);
   const double dt = 1e-6, area = g.face_area(face.axis), rho = 1.2, u_n = 10, p_star = 1e5;
   for (std::size_t t = 0; t < faces; ++t) {
@@ -431,10 +435,8 @@ TYPED_TEST(ParticleInjection, Outflow_smaller_than_the_parcel_takes_back_its_sha
   const ZoneFace face{0, 1};
   const auto layout = make_strip_layout(strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
-  Strip<Dim> strip(layout.box.count());
-  std::vector<double> pressure(layout.box.count(), 1e5);
-  for (std::size_t c = 0; c < layout.box.count(); ++c)
-    strip.set(c, 1.2, Vec<Dim>::Zero(), pressure[c]);
+  const auto strip = Strip<Dim>::at_rest(layout.box.count(), 1.2, 1e5);
+  const std::vector<double> pressure(layout.box.count(), 1e5);
   Parcels<Dim> pending(faces);
   Vec<Dim> parcel_momentum = Vec<Dim>::Zero();
   parcel_momentum(face.axis) = 4e-6;

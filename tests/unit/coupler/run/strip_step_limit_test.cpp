@@ -8,25 +8,13 @@
 #include <vector>
 
 #include "common/config/scene_loader.hpp"
+#include "tests/unit/coupler/run/air_tnt_steel_scene.hpp"
 
 namespace mpfd::coupler {
 namespace {
 
-// Air and TNT products (T Table 3.1), the fluids a strip cell can hold.
-constexpr const char* kScene = R"(name: strip
-time: {end: 1.0e-5}
-domain: {lower: [0, 0, 0], upper: [1, 1, 0.01], cells: [10, 10, 1]}
-materials:
-  air: {eos: {type: ideal_gas, gamma: 1.4}}
-  tnt:
-    eos: {type: jwl, rho0: 1630, A: 3.712e11, B: 3.21e9, R1: 4.15, R2: 0.95, omega: 0.3,
-          E0: 6.993e9}
-initial: {material: air, density: 1.225, specific_internal_energy: 2.0685e5}
-bodies:
-  - {name: products, material: tnt, density: 1630, specific_internal_energy: 4.2902e6,
-     shape: {box: {lower: [0, 0, 0], upper: [0.2, 0.2, 0.01]}}}
-output: {interval: 1.0e-5}
-)";
+// The fluids a strip cell can hold: air (material 0) and TNT products (1).
+using testing::kAirTntSteelScene;
 
 using Vec2 = handshake::Vec<2>;
 
@@ -48,7 +36,7 @@ struct Cells {
 };
 
 TEST(StripStepLimit, AirAtRestGivesTheMpmCourantStepOfItsSoundSpeed) {
-  const auto scene = config::parse_scene(kScene, "strip.yaml");
+  const auto scene = config::parse_scene(kAirTntSteelScene, "strip.yaml");
   const auto& air = scene.materials[0].eos;
   Cells cells;
   for (int c = 0; c < 4; ++c) cells.add(air, 1.225, Vec2::Zero(), 2.0685e5);
@@ -57,7 +45,7 @@ TEST(StripStepLimit, AirAtRestGivesTheMpmCourantStepOfItsSoundSpeed) {
 }
 
 TEST(StripStepLimit, TheFastestCellSetsTheStep) {
-  const auto scene = config::parse_scene(kScene, "strip.yaml");
+  const auto scene = config::parse_scene(kAirTntSteelScene, "strip.yaml");
   const auto& air = scene.materials[0].eos;
   Cells cells;
   cells.add(air, 1.225, Vec2::Zero(), 2.0685e5);
@@ -69,7 +57,7 @@ TEST(StripStepLimit, TheFastestCellSetsTheStep) {
 }
 
 TEST(StripStepLimit, ProductsTakeTheSoundSpeedOfTheirOwnEos) {
-  const auto scene = config::parse_scene(kScene, "strip.yaml");
+  const auto scene = config::parse_scene(kAirTntSteelScene, "strip.yaml");
   const auto& jwl = scene.materials[1].eos;
   Cells cells;
   cells.add(jwl, 100.0, Vec2(2000.0, 0.0), 3.0e6);  // expanded products
@@ -82,7 +70,7 @@ TEST(StripStepLimit, ProductsTakeTheSoundSpeedOfTheirOwnEos) {
 }
 
 TEST(StripStepLimit, EmptyCellsDoNotCount) {
-  const auto scene = config::parse_scene(kScene, "strip.yaml");
+  const auto scene = config::parse_scene(kAirTntSteelScene, "strip.yaml");
   Cells cells;
   cells.rho = {0.0, 0.0};
   cells.energy = {0.0, 0.0};
