@@ -173,7 +173,10 @@ double EulerSolver::still_limit() const {
 }
 
 double EulerSolver::stable_dt() const {
-  if (limit_after_step_) return 2.0 * options_.cfl * *limit_after_step_;
+  return 2.0 * options_.cfl * (limit_after_step_ ? *limit_after_step_ : grid_limit());
+}
+
+double EulerSolver::grid_limit() const {
   const auto& n = state_.grid.cells();
   double limit = std::numeric_limits<double>::infinity();
   // Lines outside the disturbed box are as they started: use their cached limit.
@@ -188,7 +191,7 @@ double EulerSolver::stable_dt() const {
                                 : line_limit(state_.grid.cell_index(0, j, k), 0, n[0]);
       limit = std::min(limit, line);
     }
-  return 2.0 * options_.cfl * limit;
+  return limit;
 }
 
 double EulerSolver::step_toward(double target) const {
@@ -242,6 +245,9 @@ void EulerSolver::advance(double dt) {
     parallel_for(g.cell_count(),
                  [&](std::size_t c) { energy_[c] = specific_internal_energy(state_, c); });
     update_materials();
+    // The next step's limit, once the mixed cells' EOS are refitted: part of
+    // the step's work, as without tracers, so a coupler's ProposeDt only reads it.
+    limit_after_step_ = grid_limit();
   }
   time_ += dt;
   ++steps_;

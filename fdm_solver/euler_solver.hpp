@@ -125,6 +125,8 @@ class EulerSolver {
   /// The same minimum over the cells outside the disturbed box (still, so
   /// per line from the start where a whole line is outside) [s].
   [[nodiscard]] double still_limit() const;
+  /// The minimum over the whole grid, from the present state [s].
+  [[nodiscard]] double grid_limit() const;
   /// Cell pressures from the tracer closure; mixed cells get their fitted EOS.
   void update_materials();
   /// Allocates what only a multi-material solver uses (mixture fits, scratch).
@@ -143,7 +145,8 @@ class EulerSolver {
   std::vector<Pencil> pencils_;           // one per thread
   std::vector<double> still_line_limit_;  // min dx/(|u|+c) of each x-line at the start/import
   // min dx/(|u|+c) over the grid after the last step, found in its last
-  // sweep; empty where unknown (before a step, after writes from outside).
+  // sweep (after the materials' update with tracers); empty where unknown
+  // (before a step, after writes from outside).
   std::optional<double> limit_after_step_;
   std::optional<std::uint8_t> only_material_;  // of every cell, this step, if one
   QuietFaceFlux quiet_flux_;                   // through faces of still boundary cells

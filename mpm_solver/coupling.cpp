@@ -63,22 +63,24 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
   const auto& g = grid();
   const grid::Vec3 upper = g.upper();
   for (std::size_t i = 0; i < n; ++i) {
-    const std::string which =
-        "injected particle " + std::to_string(i) + " (id " + std::to_string(batch.id[i]) + ")";
+    // Named only when refused: a string per particle was most of an injection's cost.
+    const auto which = [&] {
+      return "injected particle " + std::to_string(i) + " (id " + std::to_string(batch.id[i]) + ")";
+    };
     if (!(batch.mass[i] > 0.0) || !std::isfinite(batch.mass[i]) || !(batch.volume[i] > 0.0) ||
         !std::isfinite(batch.volume[i]))
-      throw Error(which + ": mass and volume must be positive and finite, got " +
+      throw Error(which() + ": mass and volume must be positive and finite, got " +
                   std::to_string(batch.mass[i]) + " kg, " + std::to_string(batch.volume[i]) +
                   " m^3");
     if (batch.material[i] >= materials_.size())
-      throw Error(which + ": material " + std::to_string(batch.material[i]) +
+      throw Error(which() + ": material " + std::to_string(batch.material[i]) +
                   " is not one of the scene's " + std::to_string(materials_.size()));
     for (int a = 0; a < 3; ++a) {
       const double x = batch.position[3 * i + static_cast<std::size_t>(a)];
       if (!std::isfinite(x) || (g.is_active(a) && (x < g.origin()[a] || x >= upper[a])))
-        throw Error(which + ": position " + std::to_string(x) + " m on axis " + std::to_string(a) +
-                    " is off the grid [" + std::to_string(g.origin()[a]) + ", " +
-                    std::to_string(upper[a]) + ")");
+        throw Error(which() + ": position " + std::to_string(x) + " m on axis " +
+                    std::to_string(a) + " is off the grid [" + std::to_string(g.origin()[a]) +
+                    ", " + std::to_string(upper[a]) + ")");
     }
   }
   for (std::size_t i = 0; i < n; ++i) model_for(batch.material[i]);  // may throw: before growing
@@ -110,8 +112,7 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
         particles_.deviatoric_stress[kFromVoigt[c]][p] = sigma[c] + (c < 3 ? pressure : 0.0);
     }
   }
-  home_slot_.reserve(particles_.size());  // the step's scratch: sized here, not in the step
-  leaving_.reserve(particles_.size());
+  reserve_particle_scratch();
   compute_stable_dt(first);  // the others have not changed since the last full pass
 }
 
@@ -339,8 +340,7 @@ void MpmSolver::restore(ParticleSet particles, std::span<const std::size_t> inje
   body_shear_modulus_.resize(scene_bodies_);
   for (const std::size_t m : injected_body_materials) injected_body(m);  // one per material
   particles_ = std::move(particles);
-  home_slot_.reserve(particles_.size());
-  leaving_.reserve(particles_.size());
+  reserve_particle_scratch();
   time_ = time;
   steps_ = steps;
   ledger_ = ledger;

@@ -117,8 +117,7 @@ MpmSolver::MpmSolver(const config::Scene& scene, MpmSettings settings)
     particles_.pressure[p] *= burn_fraction(p);  // T (3-1)
     particles_.set_deviator(p, s);
   }
-  home_slot_.reserve(particles_.size());
-  leaving_.reserve(particles_.size());
+  reserve_particle_scratch();
 
   const auto& mpm = scene.solver.mpm;
   gravity_ = mpm.gravity;
@@ -227,6 +226,12 @@ void MpmSolver::advance(double dt) {
   ++steps_;
   remove_outflow();
   compute_stable_dt();
+}
+
+void MpmSolver::reserve_particle_scratch() {
+  const std::size_t n = particles_.size();
+  if (home_slot_.capacity() < n) home_slot_.reserve(std::max(n, 2 * home_slot_.capacity()));
+  if (leaving_.capacity() < n) leaving_.reserve(std::max(n, 2 * leaving_.capacity()));
 }
 
 void MpmSolver::rebuild_grid() {

@@ -251,6 +251,10 @@ class MpmSolver {
   /// computed (particles appended since). Throws (throw_unphysical) if a visited
   /// particle is unphysical.
   void compute_stable_dt(std::size_t first = 0);
+  /// Sizes the per-particle scratch for the present particle count, doubling
+  /// its capacity: injection adds a few particles every step, and reserving the
+  /// exact count reallocated (and page-faulted) these arrays each time.
+  void reserve_particle_scratch();
   /// c + |v| of particle p [m/s].
   [[nodiscard]] double signal_speed(std::size_t p) const;
   /// Particle p's state is finite, its density positive and, in an ideal gas, its pressure not

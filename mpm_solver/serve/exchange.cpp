@@ -66,7 +66,8 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
         result.mutable_exported()->set_count(
             region.kind == cosim::v1::REGION_KIND_NODES
                 ? export_node_region(solver, region, op.export_region(), zone.node_box_map, reply)
-                : export_particle_region(solver, region, op.export_region(), reply));
+                : export_particle_region(solver, region, op.export_region(), reply,
+                                         zone.particle_scratch));
         break;
       }
       case cosim::v1::Operation::kRemove: {
@@ -76,7 +77,7 @@ cosim::Message run_exchange(ServedZone& zone, const cosim::Message& request) {
                                      : &zone.region(remove.left_region(), "RemoveParticles");
         result.mutable_removed()->set_group(remove.group());
         result.mutable_removed()->set_removed(
-            remove_particles(solver, left, remove, request, reply));
+            remove_particles(solver, left, remove, request, reply, zone.particle_scratch));
         break;
       }
       case cosim::v1::Operation::kAdvance:

@@ -64,7 +64,7 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
       if (region->kind == cosim::v1::REGION_KIND_NODES)
         export_node_region(zone.solver, *region, op, zone.node_box_map, fields);
       else
-        export_particle_region(zone.solver, *region, op, fields);
+        export_particle_region(zone.solver, *region, op, fields, zone.particle_scratch);
     }
     return cosim::slice_into_chunks(
         fields, body.transfer_id(), names,

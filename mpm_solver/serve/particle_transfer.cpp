@@ -44,21 +44,20 @@ bool has_array(const cosim::Message& request, const std::string& group, const st
   return false;
 }
 
-/// Whether each particle lies in a PARTICLES region's box, read from the particle set.
-class RegionBounds {
- public:
-  RegionBounds(const MpmSolver& solver, const ZoneRegion& region)
-      : ps_(solver.particles()), extent_(region, solver.grid()) {}
-  /// Whether particle p lies in the box (active axes only).
-  [[nodiscard]] bool contain(std::size_t p) const {
-    const double x[3] = {ps_.position[0][p], ps_.position[1][p], ps_.position[2][p]};
-    return extent_.contains(x);
+/// flags[p] = 1 for each particle outside the region's box (active axes), else
+/// 0 (`flags` is the zone's scratch: no allocation once grown); returns how
+/// many are outside.
+std::size_t mark_outside(const ParticleSet& ps, const RegionExtent& extent,
+                         std::vector<std::uint8_t>& flags) {
+  flags.resize(ps.size());
+  std::size_t outside = 0;
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+    flags[p] = extent.contains(x) ? 0 : 1;
+    outside += flags[p];
   }
-
- private:
-  const ParticleSet& ps_;
-  RegionExtent extent_;
-};
+  return outside;
+}
 
 void append_batch(const ParticleBatch& batch, const std::string& group, cosim::Message& reply) {
   const std::uint64_t n = batch.size();
@@ -114,27 +113,23 @@ std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticl
 
 std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
                                const cosim::v1::RemoveParticles& op, const cosim::Message& request,
-                               cosim::Message& reply) {
+                               cosim::Message& reply, ParticleScratch& scratch) {
   const ParticleSet& ps = solver.particles();
-  std::vector<std::uint8_t> flags(ps.size(), 0);
+  auto& flags = scratch.flags;
   if (left_region != nullptr) {
     if (left_region->kind != cosim::v1::REGION_KIND_PARTICLES)
       throw cosim::ProtocolError(
           cosim::v1::ERROR_CODE_UNKNOWN_REGION,
           "RemoveParticles: left_region '" + left_region->name + "' is not a PARTICLES region");
-    const RegionBounds region(solver, *left_region);
-    std::size_t leaving = 0;
-    for (std::size_t p = 0; p < ps.size(); ++p) {
-      flags[p] = region.contain(p) ? 0 : 1;
-      leaving += flags[p];
-    }
-    if (leaving == 0) {  // the usual step: nothing to collect, no second scan
+    const RegionExtent extent(*left_region, solver.grid());
+    if (mark_outside(ps, extent, flags) == 0) {  // the usual step: nothing to collect
       if (!op.discard()) append_batch(ParticleBatch{}, op.group(), reply);
       return 0;
     }
   } else {
     std::size_t n = 0;
     const auto ids = read_array<std::uint64_t>(request, "RemoveParticles", op.group(), "id", 1, n);
+    flags.assign(ps.size(), 0);
     std::unordered_map<std::uint64_t, std::size_t> index;
     index.reserve(ps.size());
     for (std::size_t p = 0; p < ps.size(); ++p) index.emplace(ps.id[p], p);
@@ -152,8 +147,8 @@ std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
 }
 
 std::uint64_t export_particle_region(const MpmSolver& solver, const ZoneRegion& region,
-                                     const cosim::v1::ExportRegion& request,
-                                     cosim::Message& reply) {
+                                     const cosim::v1::ExportRegion& request, cosim::Message& reply,
+                                     ParticleScratch& scratch) {
   std::vector<std::string> names(request.quantities().begin(), request.quantities().end());
   if (names.empty()) names = region.quantities;
   for (const auto& name : names)
@@ -162,10 +157,13 @@ std::uint64_t export_particle_region(const MpmSolver& solver, const ZoneRegion& 
                                  "region '" + region.name + "', quantity '" + name +
                                      "': not declared for it in Setup, so it cannot be exported");
   const ParticleSet& ps = solver.particles();
-  std::vector<std::size_t> members;
-  const RegionBounds bounds(solver, region);
-  for (std::size_t p = 0; p < ps.size(); ++p)
-    if (bounds.contain(p)) members.push_back(p);
+  auto& members = scratch.members;
+  members.clear();
+  const RegionExtent extent(region, solver.grid());
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
+    if (extent.contains(x)) members.push_back(p);
+  }
   const std::uint64_t n = members.size();
   for (const auto& name : names) {
     if (name.starts_with("outflow_")) {  // v1.1: the zone's ledger, one row

@@ -8,12 +8,20 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "cosim/message.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 #include "mpm_solver/serve/zone_region.hpp"
 
 namespace mpfd::mpm {
+
+/// What the particle scans of a step need, kept by the zone between calls so
+/// that they do not allocate once grown.
+struct ParticleScratch {
+  std::vector<std::size_t> members;  ///< the particles inside an exported region
+  std::vector<std::uint8_t> flags;   ///< per particle: inside a region, or to be removed
+};
 
 /// The arrays `group`/{id, position, velocity, mass, volume, internal_energy,
 /// material[, stress]} of `message` as a batch. Throws
@@ -39,11 +47,12 @@ std::uint64_t inject_particles(MpmSolver& solver, const cosim::v1::InjectParticl
 /// names a particle the zone does not hold, UNKNOWN_REGION for left_region.
 std::uint64_t remove_particles(MpmSolver& solver, const ZoneRegion* left_region,
                                const cosim::v1::RemoveParticles& op, const cosim::Message& request,
-                               cosim::Message& reply);
+                               cosim::Message& reply, ParticleScratch& scratch);
 
 /// Appends the asked quantities (none: the region's) of the particles inside
 /// the region's box of cells, in particle order. Returns their count.
 std::uint64_t export_particle_region(const MpmSolver& solver, const ZoneRegion& region,
-                                     const cosim::v1::ExportRegion& request, cosim::Message& reply);
+                                     const cosim::v1::ExportRegion& request, cosim::Message& reply,
+                                     ParticleScratch& scratch);
 
 }  // namespace mpfd::mpm

@@ -16,6 +16,7 @@
 #include "cosim/serving/field_stream.hpp"
 #include "mpm_solver/followed_gauges.hpp"
 #include "mpm_solver/mpm_solver.hpp"
+#include "mpm_solver/serve/particle_transfer.hpp"
 #include "mpm_solver/serve/zone_region.hpp"
 #include "mpm_solver/snapshot_particles.hpp"
 
@@ -35,7 +36,8 @@ struct ServedZone {
   bool dormant;
   std::optional<io::SnapshotWriter> snapshots;  // made at the first WriteOutput
   SnapshotParticles snapshot_fields;
-  NodeBoxMap node_box_map;  ///< scratch of the NODES exports, kept so they do not allocate
+  NodeBoxMap node_box_map;           ///< scratch of the NODES exports, kept so they do not allocate
+  ParticleScratch particle_scratch;  ///< scratch of the PARTICLES exports and removals
   std::optional<cosim::FieldAssembly> field_import;  ///< the FieldChunks of an import (v1.2)
 
   /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
