@@ -115,8 +115,10 @@ TEST(CfdmpBlast, Fast_gas_charge_gauges_agree_across_the_zone_face) {
   const auto yaml = replaced_all(read_text(kConfigs + "cfdmp_blast_2d_coarse.yaml"),
                                  "    material: tnt\n", "    material: air\n");
   const auto c = run_both("gas", yaml);
-  // Measured: p1 54.44 / p2 52.54 MPa (-3.5 %), arrival 17.68 / 18.07 us
-  // (0.39 us; h / U = 1.19 us); pure FDM at p2 54.21 MPa (CFDMP -3.1 %), 17.68 us.
+  // Measured (uGIMP MPM): p1 54.44 / p2 54.77 MPa (+0.6 %), arrival 17.68 /
+  // 18.69 us (1.01 us = 0.85 h / U, h / U = 1.19 us; linear shapes: 0.39 us,
+  // uGIMP's wider particle smears the shock on this grid); pure FDM at p2
+  // 54.21 MPa (CFDMP +1.0 %), 17.68 us.
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
@@ -129,10 +131,10 @@ TEST(CfdmpBlast, Fast_gas_charge_gauges_agree_across_the_zone_face) {
 
 TEST(CfdmpBlast, Fast_tnt_charge_gauges_agree_across_the_zone_face) {
   const auto c = run_both("tnt", read_text(kConfigs + "cfdmp_blast_2d_coarse.yaml"));
-  // Measured: p1 51.27 / p2 51.25 MPa (-0.04 %), arrival 15.70 / 16.27 us
-  // (0.57 us = 0.52 h / U, h / U = 1.10 us); pure FDM at p2 51.82 MPa (CFDMP
-  // -1.1 %), 15.73 us. Before the injected particles' material was chosen by
-  // pressure (all air), p2 read 64.69 MPa (+26 %).
+  // Measured (uGIMP MPM): p1 51.14 / p2 52.24 MPa (+2.2 %), arrival 15.70 /
+  // 16.63 us (0.93 us = 0.85 h / U, h / U = 1.10 us; linear shapes: 0.57 us);
+  // pure FDM at p2 51.82 MPa (CFDMP +0.8 %), 15.73 us. Before the injected
+  // particles' material was chosen by pressure (all air), p2 read 64.69 MPa (+26 %).
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
@@ -141,27 +143,27 @@ TEST(CfdmpBlast, Fast_tnt_charge_gauges_agree_across_the_zone_face) {
             0.01);
 }
 
-TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_within_15_percent_thesis_5_open) {
+TEST(CfdmpBlast, Full_thesis_grid_gas_charge_gauges_agree) {
   const auto yaml = replaced_all(read_text(kConfigs + "cfdmp_blast_2d.yaml"), "    material: tnt\n",
                                  "    material: air\n");
   const auto c = run_both("full-gas", yaml);
-  // Measured (h = 2 mm, 12 s): p1 52.86 / p2 48.10 MPa (-9.0 %), arrival
-  // 17.05 / 17.16 us (0.11 us; h / U = 0.45 us); pure FDM at p2 53.05 MPa. The
-  // shock itself agrees; the window's peak is the charge gas arriving behind it
-  // at 60 us, which the MPM zone holds ~9 % lower on this grid (3.5 % at
-  // h = 5 mm): the thesis's 5 % is not met here, so 15 % is asserted (open,
-  // docs/coupler.md, V6).
-  EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.15);
+  // Measured (h = 2 mm, uGIMP MPM, 24 s): p1 53.25 / p2 51.50 MPa (-3.3 %),
+  // arrival 17.05 / 17.24 us (0.19 us; h / U = 0.45 us); pure FDM at p2
+  // 53.05 MPa (CFDMP -2.9 %). The window's peak is the charge gas arriving
+  // behind the shock; with linear shapes the MPM zone held it 9.0 % low (the
+  // flow's transverse noise, docs/coupler.md "Where the tail is lost"), so
+  // 15 % was asserted; uGIMP meets the thesis's 5 %.
+  EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
-            0.15);
+            0.05);
 }
 
 TEST(CfdmpBlast, Full_thesis_grid_tnt_charge_gauges_agree) {
   const auto c = run_both("full-tnt", read_text(kConfigs + "cfdmp_blast_2d.yaml"));
-  // Measured (h = 2 mm, 26 s): p1 46.53 / p2 45.04 MPa (-3.2 %), arrival
-  // 15.34 / 15.53 us (0.19 us; h / U = 0.43 us); pure FDM p1 46.34, p2 46.28 MPa
-  // (CFDMP p2 -2.7 %).
+  // Measured (h = 2 mm, uGIMP MPM, 38 s): p1 46.53 / p2 45.67 MPa (-1.8 %),
+  // arrival 15.35 / 15.69 us (0.34 us; h / U = 0.43 us); pure FDM p1 46.34,
+  // p2 46.28 MPa (CFDMP p2 -1.3 %). Linear shapes: p2 45.04 MPa (-3.2 %).
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.fdm_zone.peak_overpressure), 0.05);
   EXPECT_LT(std::abs(c.mpm_zone.arrival - c.fdm_zone.arrival), c.cell_travel);
   EXPECT_LT(relative(c.mpm_zone.peak_overpressure, c.pure_fdm_at_mpm_point.peak_overpressure),
