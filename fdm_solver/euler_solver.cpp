@@ -240,13 +240,13 @@ void EulerSolver::advance(double dt) {
   }
   // The next step's limit comes from the last sweep where cells moved; a
   // mixed cell's EOS is refitted after it, so then a separate scan is needed.
-  if (!tracker_) limit_after_step_ = std::min(limit, still_limit());
-  if (tracker_) {
+  // Either way the step finds it, so a coupler's ProposeDt only reads it.
+  if (!tracker_) {
+    limit_after_step_ = std::min(limit, still_limit());
+  } else {
     parallel_for(g.cell_count(),
                  [&](std::size_t c) { energy_[c] = specific_internal_energy(state_, c); });
     update_materials();
-    // The next step's limit, once the mixed cells' EOS are refitted: part of
-    // the step's work, as without tracers, so a coupler's ProposeDt only reads it.
     limit_after_step_ = grid_limit();
   }
   time_ += dt;

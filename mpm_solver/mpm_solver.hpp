@@ -251,9 +251,9 @@ class MpmSolver {
   /// computed (particles appended since). Throws (throw_unphysical) if a visited
   /// particle is unphysical.
   void compute_stable_dt(std::size_t first = 0);
-  /// Sizes the per-particle scratch for the present particle count, doubling
-  /// its capacity: injection adds a few particles every step, and reserving the
-  /// exact count reallocated (and page-faulted) these arrays each time.
+  /// Reserves the per-particle scratch's capacity for the present particle
+  /// count, doubling it: injection adds a few particles every step, and
+  /// reserving the exact count reallocated (and page-faulted) it each time.
   void reserve_particle_scratch();
   /// c + |v| of particle p [m/s].
   [[nodiscard]] double signal_speed(std::size_t p) const;

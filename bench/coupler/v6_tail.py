@@ -13,7 +13,9 @@ run's transverse velocity error v_y(MPM, mass-weighted per cell) - v_y(mirrored 
 """
 import argparse
 import os
+import re
 import subprocess
+import sys
 
 import h5py
 import matplotlib
@@ -31,8 +33,11 @@ SNAPSHOT = 16  # 40 us at 2.5 us a snapshot
 def run(args):
     for shape in SHAPES:
         text = v6_bench.scene_text("cfdmp", args.h * 1e-3, args.end).replace(
-            "interval: 2.0e-5", "interval: 2.5e-6").replace(
-            "shape_function: linear", f"shape_function: {shape}")
+            "interval: 2.0e-5", "interval: 2.5e-6")
+        text, count = re.subn(r"shape_function: \w+", f"shape_function: {shape}", text)
+        if count != 1:
+            sys.exit(f"v6_tail: configs/cfdmp_blast_2d.yaml names shape_function {count} times, "
+                     "expected once")
         scene = os.path.join(args.out, f"v6_tail_{shape}.yaml")
         os.makedirs(args.out, exist_ok=True)
         open(scene, "w").write(text)

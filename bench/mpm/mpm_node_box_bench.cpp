@@ -2,22 +2,26 @@
 // overhead, docs/coupler.md): the ghost_nodes export's particle-to-node map
 // of one node box, against one whole MPM step on the same particles, in one
 // run so that the ratio is measured under the same load (the machine is shared).
-//   Step: one advance of a V6-like MPM zone, 25 x 250 cells of 2 mm,
+//   Step/<shape>: one advance of a V6-like MPM zone, 25 x 250 cells of 2 mm,
 //     2 x 2 particles per cell, a hot band in its middle so the particles
-//     leave their lattice (the summation order then matters, as in a run).
-//   GhostNodeBox: MpmSolver::map_particles_to_node_box on the nodes of
-//     3 ghost cells across the zone (CfdmpStep's box for w = 5), after the
+//     leave their lattice (the summation order then matters, as in a run);
+//     shape 0 linear, 1 uGIMP.
+//   GhostNodeBox/<shape>: MpmSolver::map_particles_to_node_box on the nodes
+//     of 3 ghost cells across the zone (CfdmpStep's box for w = 5), after the
 //     same warm-up; counters give the particles reaching it.
 // Run: build/bench/mpm/mpm_node_box_bench --benchmark_format=json
 
 #include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <string>
 
 #include "common/config/scene_loader.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 
 namespace {
 
-mpfd::config::Scene zone() {
+mpfd::config::Scene zone(std::int64_t shape) {
   return mpfd::config::parse_scene(
       "name: node_box_bench\ntime: {end: 1.0, cfl: 0.3}\n"
       "domain: {lower: [0, 0, 0], upper: [0.05, 0.5, 0.002], cells: [25, 250, 1]}\n"
@@ -31,7 +35,8 @@ mpfd::config::Scene zone() {
       "  - {name: high, material: air, density: 1.2, pressure: 1.0e5,\n"
       "     shape: {box: {lower: [0, 0.3, 0], upper: [0.05, 0.5, 0.002]}}}\n"
       "boundaries: {x_lower: wall, x_upper: wall, y_lower: wall, y_upper: wall}\n"
-      "output: {interval: 1.0}\nsolver: {method: mpm, mpm: {shape_function: linear}}\n",
+      "output: {interval: 1.0}\nsolver: {method: mpm, mpm: {shape_function: " +
+          std::string(shape == 0 ? "linear" : "gimp") + "}}\n",
       "node_box_bench.yaml");
 }
 
@@ -40,16 +45,16 @@ void warm_up(mpfd::mpm::MpmSolver& solver) {
 }
 
 void Step(benchmark::State& state) {
-  const auto scene = zone();
+  const auto scene = zone(state.range(0));
   mpfd::mpm::MpmSolver solver(scene, mpfd::mpm::MpmSettings::from_scene(scene));
   warm_up(solver);
   for (auto _ : state) solver.advance(solver.stable_dt());
   state.counters["particles"] = static_cast<double>(solver.particles().size());
 }
-BENCHMARK(Step)->Iterations(200)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Step)->Arg(0)->Arg(1)->ArgName("shape")->Iterations(200)->Unit(benchmark::kMicrosecond);
 
 void GhostNodeBox(benchmark::State& state) {
-  const auto scene = zone();
+  const auto scene = zone(state.range(0));
   mpfd::mpm::MpmSolver solver(scene, mpfd::mpm::MpmSettings::from_scene(scene));
   warm_up(solver);
   mpfd::mpm::NodeBoxMap box;
@@ -60,7 +65,12 @@ void GhostNodeBox(benchmark::State& state) {
   state.counters["particles"] = static_cast<double>(solver.particles().size());
   state.counters["reaching"] = static_cast<double>(box.reaching.size());
 }
-BENCHMARK(GhostNodeBox)->Iterations(2000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(GhostNodeBox)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("shape")
+    ->Iterations(2000)
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

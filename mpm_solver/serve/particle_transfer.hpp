@@ -20,7 +20,7 @@ namespace mpfd::mpm {
 /// that they do not allocate once grown.
 struct ParticleScratch {
   std::vector<std::size_t> members;  ///< the particles inside an exported region
-  std::vector<std::uint8_t> flags;   ///< per particle: inside a region, or to be removed
+  std::vector<std::uint8_t> flags;   ///< per particle: 1 to remove (outside the region, or named)
 };
 
 /// The arrays `group`/{id, position, velocity, mass, volume, internal_energy,
