@@ -291,6 +291,7 @@ HandoffRecord handoff_fdm_to_mpm(const config::Scene& scene, const AfdmpLayout& 
   record.worst_error = worst_of({kernel, solver});
   record.tolerance = handoff_tolerance(std::max(particles.size(), fluid_grid.cell_count()));
   record.stable_dt = done.stable_dt();
+  record.fsi_face_leak = leak;
   record.summary = {
       {"name", "fdm_to_mpm"},
       {"cells", fluid_grid.cell_count()},

@@ -36,6 +36,9 @@ struct HandoffRecord {
   ConservedError worst_error;  ///< the largest of the three comparisons
   double tolerance = 0;        ///< what round-off allows for its sums (handoff_tolerance)
   double stable_dt = 0;        ///< of the importing solver [s]
+  /// fdm_to_mpm: what the FDM moved into the placeholder FSI cells, dropped
+  /// (the run-long audit's named term, afdmp_audit.hpp).
+  Conserved fsi_face_leak;
 };
 
 /// The scene material indices of the charges' explosives.

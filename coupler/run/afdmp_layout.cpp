@@ -177,6 +177,9 @@ AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start) {
     out.fdm.push_back(make_region(r::kFsiCells, Kind::REGION_KIND_CELLS, *layout.fsi_cells,
                                   {"rho", "momentum", "E"}));
   }
+  out.fdm.push_back(
+      make_region(r::kAuditCells, Kind::REGION_KIND_CELLS, layout.all_cells,
+                  {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"}));
   if (start == AfdmpStart::spherical && !layout.fsi_cells) return out;
   out.mpm.push_back(make_region(r::kFluidParticles, Kind::REGION_KIND_PARTICLES, layout.fluid_cells,
                                 {"id", "position", "velocity", "mass", "volume", "internal_energy",
@@ -187,6 +190,9 @@ AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start) {
   if (start == AfdmpStart::mpm)
     out.mpm.push_back(make_region(r::kChargeParticles, Kind::REGION_KIND_PARTICLES,
                                   layout.charge_cells, {"burn_fraction", "material"}));
+  out.mpm.push_back(make_region(r::kAuditParticles, Kind::REGION_KIND_PARTICLES, layout.all_cells,
+                                {"mass", "velocity", "internal_energy", "outflow_mass",
+                                 "outflow_momentum", "outflow_energy"}));
   return out;
 }
 

@@ -63,6 +63,9 @@ inline constexpr const char* kFsiCells = "fsi_cells";
 inline constexpr const char* kFluidParticles = "fluid_particles";
 inline constexpr const char* kFsiParticles = "fsi_particles";
 inline constexpr const char* kChargeParticles = "charge_particles";
+// The run-long audit's (afdmp_audit.hpp): contents and outflow ledgers.
+inline constexpr const char* kAuditCells = "audit_cells";
+inline constexpr const char* kAuditParticles = "audit_particles";
 }  // namespace afdmp_region
 
 /// The Setup regions of each solver (design §3.2 table). FSI-zone regions

@@ -13,9 +13,11 @@
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
+#include "common/grid/uniform_grid.hpp"
 #include "common/io/run_summary.hpp"
 #include "cosim/arrays.hpp"
 #include "coupler/handoff/detonation_trigger.hpp"
+#include "coupler/run/afdmp_audit.hpp"
 #include "coupler/run/afdmp_handoffs.hpp"
 #include "coupler/run/afdmp_layout.hpp"
 #include "coupler/run/afdmp_phase.hpp"
@@ -63,10 +65,12 @@ void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed, b
   };
   need(0, "field_chunks");
   need(0, "tracer_regions");
+  need(0, "boundary_outflow");  // the run-long audit (afdmp_audit.hpp)
   if (fsi_zone) need(0, "material_fields");
   if (mpm_needed) {
     need(1, "field_chunks");
     need(1, "particles");
+    need(1, "boundary_outflow");
   }
 }
 
@@ -93,7 +97,10 @@ class AfdmpLoop {
         hub_(hub),
         summary_(summary),
         options_(options),
-        settings_{.max_chunk_bytes = options.max_chunk_bytes, .timeout = options.handoff_timeout} {
+        settings_{.max_chunk_bytes = options.max_chunk_bytes, .timeout = options.handoff_timeout},
+        cell_volume_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
+                                                    scene.domain.cells)
+                         .cell_volume()) {
     for (const auto& peer : kPeers) contact_[peer] = Clock::now();
   }
 
@@ -103,15 +110,22 @@ class AfdmpLoop {
     if (start_ == AfdmpStart::spherical) {
       stage_.emplace(scene_);
       holder_ = "spherical";
-      if (layout_.fsi_cells)
+      if (layout_.fsi_cells) {
         discard_mpm_fluid();
-      else
+        audit_holder("mpm");  // the FSI zone it keeps
+        // The FDM will hold the placeholder there, counted by the MPM's particles.
+        audit_.set_placeholder(placeholder_conserved(scene_, layout_));
+      } else {
         retire("mpm", "the 1D start and the FDM carry this scene; no FSI zone");
+      }
       observe_stage();
       sample_stage_gauges(0);
+      audit_holder("spherical");
     } else {
       step_mpm_detonation(false, 0, 0);
+      audit_holder("mpm");
     }
+    audit_.start();
     handle(machine_.next(observation_), 0, 0);
     write_output(0);
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
@@ -159,6 +173,10 @@ class AfdmpLoop {
     summary_.set_detail("gauges", gauges_.listing());
     summary_.set_status(status);
     summary_.set_progress(report_.steps, report_.time, scene_.time.end, wall);
+    const auto entries = audit_.entries();
+    summary_.set_conservation(entries);
+    report_.mass_error = entries[0].relative_error(0);
+    report_.energy_error = entries[4].relative_error(0);
     nlohmann::json phases = phases_;
     phases.push_back({{"phase", phase_name(machine_.phase())},
                       {"start", phase_time_},
@@ -168,6 +186,7 @@ class AfdmpLoop {
                                   {"phases", phases},
                                   {"transitions", transitions_},
                                   {"handoffs", handoffs_},
+                                  {"audit", audit_.summary()},
                                   {"outputs", outputs_}});
     summary_.write(options_.out_dir / "summary.json");
   }
@@ -286,28 +305,53 @@ class AfdmpLoop {
     // A handoff can outlast an idle solver's patience (an embedded solver waits 60 s):
     // restart every clock before it begins.
     ping_idle(std::chrono::milliseconds(0));
+    const bool handing_over =
+        transition->to == AfdmpPhase::fdm_blast || transition->to == AfdmpPhase::mpm_fsi;
+    // The giver's last totals and outflow ledger (a retired solver answers no more).
+    if (handing_over) audit_holder(holder_);
+    const Conserved before = sum(audit_.current(), audit_.outflow());
+    const auto at_end = audit_.entries();  // the run-long errors as the phase ends
     std::optional<HandoffRecord> record;
     if (transition->to == AfdmpPhase::fdm_blast) {
       if (transition->from == AfdmpPhase::spherical_detonation) {
         record = handoff_spherical_to_fdm(scene_, *stage_, hub_, settings_);
+        audit_.clear_stage();
       } else {
         record = handoff_mpm_to_fdm(scene_, layout_, hub_, settings_);
-        if (layout_.fsi_cells)
+        if (layout_.fsi_cells) {
           discard_mpm_fluid();
-        else
+          audit_holder("mpm");  // the FSI zone it keeps, frozen through phase 2
+        } else {
           retire("mpm", "the FDM carries the blast; no FSI zone");
+          audit_.clear_mpm();
+        }
       }
       // Both starts leave the FSI zone's cells the scene's initial state.
       placeholder_ = placeholder_conserved(scene_, layout_);
       holder_ = "fdm";
       contact_["fdm"] = Clock::now();
+      audit_holder("fdm");
+      audit_.set_placeholder(placeholder_);
+      if (transition->from == AfdmpPhase::spherical_detonation)
+        audit_.book_remap_momentum(
+            difference(sum(audit_.current(), audit_.outflow()), before).momentum);
     } else if (transition->to == AfdmpPhase::mpm_fsi) {
       record = handoff_fdm_to_mpm(scene_, layout_, hub_, settings_, placeholder_);
       retire("fdm", "the MPM carries the FSI phase");
+      audit_.clear_fdm();
+      audit_.drop("fsi_face_leak", record->fsi_face_leak);
       holder_ = "mpm";
       contact_["mpm"] = Clock::now();
+      audit_holder("mpm");
     }
     if (!record) return;
+    // The run-long audit across the handoff: held + outflow + dropped, after - before.
+    const Conserved jump = difference(sum(audit_.current(), audit_.outflow()), before);
+    record->summary["run_long_error_before"] = {{"mass", at_end[0].relative_error(0)},
+                                                {"energy", at_end[4].relative_error(0)}};
+    record->summary["run_long_jump"] = {{"mass", jump.mass / audit_.initial().mass},
+                                        {"momentum", jump.momentum},
+                                        {"energy", jump.energy / audit_.initial().energy}};
     record->summary["time"] = t;
     record->summary["step"] = n;
     record->summary["trigger"] = transition->summary();
@@ -373,8 +417,25 @@ class AfdmpLoop {
     gauges_.record_pressure(t, stage_pressure_);
   }
 
-  /// Output of the solver that holds the state now (the last phase's, once done).
+  /// The run-long audit's reading of `who` ("spherical", "fdm" or "mpm") now.
+  void audit_holder(const std::string& who) {
+    if (who == "spherical") {
+      audit_.set_stage(stage_and_fill(scene_, *stage_));
+      return;
+    }
+    cosim::Message request;
+    add_audit_export(request, who == "fdm");
+    const cosim::Message reply = send_and_receive(who, request);
+    if (who == "fdm")
+      audit_.set_fdm(fdm_audit_reading(reply, cell_volume_));
+    else
+      audit_.set_mpm(mpm_audit_reading(reply));
+  }
+
+  /// Output of the solver that holds the state now (the last phase's, once done),
+  /// and the run-long audit's reading of it.
   void write_output(int index) {
+    audit_holder(holder_);
     if (holder_ == "spherical")
       write_stage_profile(index);
     else
@@ -431,6 +492,8 @@ class AfdmpLoop {
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;
   HandoffSettings settings_;
+  double cell_volume_;  ///< of the scene's grid [m^3]
+  RunLongAudit audit_;
   std::optional<SphericalStage> stage_;
   std::string holder_ = "mpm";  ///< who holds the state: "mpm", "spherical" or "fdm"
   Observation observation_;
@@ -482,7 +545,8 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
   };
   const CoupledRunReport report = run_session(scene, hub, solvers, options, body);
   Logger("coupler").info("done: ", report.steps, " steps to t = ", report.time, " s in ",
-                         report.wall_seconds, " s");
+                         report.wall_seconds, " s; run-long mass error ", report.mass_error,
+                         ", energy error ", report.energy_error);
   return report;
 }
 

@@ -8,7 +8,8 @@
 //            particles beside the structure it kept.
 // An idle solver gets Pings (keep-alive); a solver with no further role gets
 // Shutdown at once. Handoffs are audited and listed in summary.json
-// (details.afdmp); gauges are sampled by the active phase's solver. On any
+// (details.afdmp), and so is the whole run (summary.json "conservation",
+// afdmp_audit.hpp); gauges are sampled by the active phase's solver. On any
 // failure it names the solver, shuts the others down, keeps what was written,
 // writes summary.json with status "failed" and throws.
 

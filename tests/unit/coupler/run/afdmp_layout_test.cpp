@@ -98,11 +98,13 @@ TEST(AfdmpLayout, SetupRegionsOfTheDesignTable) {
   const AfdmpRegions r = afdmp_setup_regions(l, AfdmpStart::mpm);
   std::vector<std::string> fdm;
   for (const auto& region : r.fdm) fdm.push_back(region.name());
-  EXPECT_THAT(fdm, ::testing::ElementsAre("all_cells", "all_tracers", "fluid_cells",
-                                          "fluid_tracers", "fsi_watch", "fsi_cells"));
+  EXPECT_THAT(fdm,
+              ::testing::ElementsAre("all_cells", "all_tracers", "fluid_cells", "fluid_tracers",
+                                     "fsi_watch", "fsi_cells", "audit_cells"));
   std::vector<std::string> mpm;
   for (const auto& region : r.mpm) mpm.push_back(region.name());
-  EXPECT_THAT(mpm, ::testing::ElementsAre("fluid_particles", "fsi_particles", "charge_particles"));
+  EXPECT_THAT(mpm, ::testing::ElementsAre("fluid_particles", "fsi_particles", "charge_particles",
+                                          "audit_particles"));
   EXPECT_EQ(r.fdm[1].kind(), v1::REGION_KIND_TRACERS);
   EXPECT_EQ(r.fdm[4].box().lo(0), 798);
   EXPECT_EQ(r.fdm[4].quantities_size(), 1);
@@ -111,10 +113,15 @@ TEST(AfdmpLayout, SetupRegionsOfTheDesignTable) {
   EXPECT_EQ(r.mpm[0].kind(), v1::REGION_KIND_PARTICLES);
   EXPECT_EQ(r.mpm[0].box().hi(0), 800);
   EXPECT_EQ(r.mpm[2].box().lo(0), 449);
+  // The run-long audit's: the whole grid with the outflow ledgers (afdmp_audit.hpp).
+  EXPECT_EQ(r.fdm[6].box().hi(0), 1000);
+  EXPECT_EQ(r.fdm[6].quantities_size(), 6);
+  EXPECT_EQ(r.mpm[3].box().hi(0), 1000);
+  EXPECT_EQ(r.mpm[3].quantities(3), "outflow_mass");
 
   // start = spherical: no phase-1 trigger on the MPM.
   const AfdmpRegions s = afdmp_setup_regions(l, AfdmpStart::spherical);
-  EXPECT_EQ(s.mpm.size(), 2u);
+  EXPECT_EQ(s.mpm.size(), 3u);
 }
 
 TEST(AfdmpLayout, WithoutFsiZoneTheFluidIsTheWholeGrid) {
@@ -130,8 +137,8 @@ TEST(AfdmpLayout, WithoutFsiZoneTheFluidIsTheWholeGrid) {
   EXPECT_FALSE(l.watch_cells.has_value());
   EXPECT_EQ(box_text(l.fluid_cells), box_text(l.all_cells));
   const AfdmpRegions r = afdmp_setup_regions(l, AfdmpStart::mpm);
-  EXPECT_EQ(r.fdm.size(), 2u);
-  EXPECT_EQ(r.mpm.size(), 2u);  // fluid_particles, charge_particles
+  EXPECT_EQ(r.fdm.size(), 3u);  // all_cells, all_tracers, audit_cells
+  EXPECT_EQ(r.mpm.size(), 3u);  // fluid_particles, charge_particles, audit_particles
   EXPECT_TRUE(afdmp_setup_regions(l, AfdmpStart::spherical).mpm.empty());
 }
 
