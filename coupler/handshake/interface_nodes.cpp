@@ -18,18 +18,16 @@ std::array<int, Dim - 1> transverse_axes(int axis) {
   return axes;
 }
 
-}  // namespace
-
+// The face cells t around each node of `nodes`, a box on node layer `layer` along the normal.
 template <int Dim>
-InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
-                                             const IndexBox<Dim>& nodes) {
-  nodes.check("interface nodes");
+InterfaceStencil<Dim> stencil_on_layer(const StripLayout<Dim>& strip, const IndexBox<Dim>& nodes,
+                                       std::int64_t layer, const char* what) {
+  nodes.check(what);
   const int axis = strip.face.axis;
-  const std::int64_t layer = strip.face_node_layer();
   if (nodes.lo[axis] != layer || nodes.hi[axis] != layer + 1)
-    throw Error("interface nodes: the box must be the node layer " + std::to_string(layer) +
-                " of the MPM zone face along axis " + std::to_string(axis) + ", got [" +
-                std::to_string(nodes.lo[axis]) + ", " + std::to_string(nodes.hi[axis]) + ")");
+    throw Error(std::string(what) + ": the box must be the node layer " + std::to_string(layer) +
+                " along axis " + std::to_string(axis) + ", got [" + std::to_string(nodes.lo[axis]) +
+                ", " + std::to_string(nodes.hi[axis]) + ")");
   IndexBox<Dim> face_cells = strip.box;
   face_cells.hi[axis] = face_cells.lo[axis] + 1;
   const auto axes = transverse_axes<Dim>(axis);
@@ -48,6 +46,34 @@ InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
   return stencil;
 }
 
+// ∇N_Ic at a cell centre for a node on the cell's side `normal` (+1: upper) along `axis`
+// and, across, on the sides that bit b of slot q says.
+template <int Dim>
+Vec<Dim> centre_gradient(int axis, int normal, int q, const CellGeometry<Dim>& geometry) {
+  const auto axes = transverse_axes<Dim>(axis);
+  Vec<Dim> gradient;
+  gradient(axis) = normal / (geometry.spacing(axis) * kFaceCorners<Dim>);
+  for (int b = 0; b < Dim - 1; ++b)
+    gradient(axes[b]) =
+        (((q >> b) & 1) != 0 ? 1.0 : -1.0) / (geometry.spacing(axes[b]) * kFaceCorners<Dim>);
+  return gradient;
+}
+
+}  // namespace
+
+template <int Dim>
+InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
+                                             const IndexBox<Dim>& nodes) {
+  return stencil_on_layer(strip, nodes, strip.face_node_layer(), "interface nodes (the face)");
+}
+
+template <int Dim>
+InterfaceStencil<Dim> make_outer_node_stencil(const StripLayout<Dim>& strip,
+                                              const IndexBox<Dim>& nodes) {
+  return stencil_on_layer(strip, nodes, strip.face_node_layer() - strip.face.side,
+                          "outer nodes (one cell outside the face)");
+}
+
 template <int Dim>
 void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
                           double reference_pressure, const StripLayout<Dim>& layout,
@@ -60,7 +86,6 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
   require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
   require_node_lengths(add, stencil.cells.size(), "interface nodes");
   const int axis = layout.face.axis;
-  const auto axes = transverse_axes<Dim>(axis);
   const double volume = geometry.cell_volume;
   const double weight = 1.0 / (1 << Dim);  // N_Ic at the cell centre
   for (std::size_t n = 0; n < stencil.cells.size(); ++n) {
@@ -71,16 +96,51 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
       const std::int64_t t = stencil.cells[n][q];
       if (t < 0) continue;
       const std::size_t c = layout.outer[static_cast<std::size_t>(t)];
-      Vec<Dim> gradient;  // ∇N_Ic at the centre of cell c
-      gradient(axis) = layout.face.side / (geometry.spacing(axis) * kFaceCorners<Dim>);
-      for (int b = 0; b < Dim - 1; ++b)
-        gradient(axes[b]) =
-            (((q >> b) & 1) != 0 ? 1.0 : -1.0) / (geometry.spacing(axes[b]) * kFaceCorners<Dim>);
+      // The face node is on cell k-w's side towards the zone.
+      const Vec<Dim> gradient = centre_gradient<Dim>(axis, layout.face.side, q, geometry);
       mass += weight * strip.rho[c] * volume;           // T (4-7)
       momentum += weight * volume * strip.momentum[c];  // T (4-8)
       const double pushing =
           force_volume.empty() ? volume : force_volume[static_cast<std::size_t>(t)];
       force += (strip_pressure[c] - reference_pressure) * pushing * gradient;  // T (4-9)
+    }
+    add.mass[n] = mass;
+    add.momentum[n] = momentum;
+    add.internal_force[n] = force;
+  }
+}
+
+template <int Dim>
+void outer_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
+                      const CellStates<Dim>& beyond, std::span<const double> beyond_pressure,
+                      double reference_pressure, const StripLayout<Dim>& layout,
+                      const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
+                      const NodeOutputs<Dim>& add) {
+  geometry.check();
+  require_lengths(strip, layout.box.count(), "strip cells");
+  require_length(strip_pressure.size(), layout.box.count(), "strip cells", "pressure");
+  require_lengths(beyond, layout.face_cells(), "beyond cells (k-w-1)");
+  require_length(beyond_pressure.size(), layout.face_cells(), "beyond cells (k-w-1)", "pressure");
+  require_node_lengths(add, stencil.cells.size(), "outer nodes");
+  const int axis = layout.face.axis;
+  const double volume = geometry.cell_volume;
+  const double weight = 1.0 / (1 << Dim);  // N_Ic at the cell centre
+  for (std::size_t n = 0; n < stencil.cells.size(); ++n) {
+    double mass = 0;
+    Vec<Dim> momentum = Vec<Dim>::Zero();
+    Vec<Dim> force = Vec<Dim>::Zero();
+    for (int q = 0; q < kFaceCorners<Dim>; ++q) {
+      const std::int64_t t = stencil.cells[n][q];
+      if (t < 0) continue;
+      const auto b = static_cast<std::size_t>(t);
+      const std::size_t c = layout.outer[b];
+      // The node is on cell k-w's side away from the zone and on cell k-w-1's side towards it.
+      const Vec<Dim> outer_gradient = centre_gradient<Dim>(axis, -layout.face.side, q, geometry);
+      const Vec<Dim> beyond_gradient = centre_gradient<Dim>(axis, layout.face.side, q, geometry);
+      mass += weight * volume * (strip.rho[c] + beyond.rho[b]);                // T (4-7)
+      momentum += weight * volume * (strip.momentum[c] + beyond.momentum[b]);  // T (4-8)
+      force += volume * ((strip_pressure[c] - reference_pressure) * outer_gradient +
+                         (beyond_pressure[b] - reference_pressure) * beyond_gradient);  // T (4-9)
     }
     add.mass[n] = mass;
     add.momentum[n] = momentum;
@@ -114,6 +174,12 @@ void face_push_volume(std::span<const double> face_mass, std::span<const double>
                                           const StripLayout<Dim>&, const InterfaceStencil<Dim>&,   \
                                           const CellGeometry<Dim>&, const NodeOutputs<Dim>&,       \
                                           std::span<const double>);                                \
+  template InterfaceStencil<Dim> make_outer_node_stencil<Dim>(const StripLayout<Dim>&,             \
+                                                              const IndexBox<Dim>&);               \
+  template void outer_node_terms<Dim>(const CellStates<Dim>&, std::span<const double>,             \
+                                      const CellStates<Dim>&, std::span<const double>, double,     \
+                                      const StripLayout<Dim>&, const InterfaceStencil<Dim>&,       \
+                                      const CellGeometry<Dim>&, const NodeOutputs<Dim>&);          \
   template void face_push_volume<Dim>(std::span<const double>, std::span<const double>,            \
                                       const StripLayout<Dim>&, double, std::span<double>);
 MPFD_INSTANTIATE_INTERFACE(1)

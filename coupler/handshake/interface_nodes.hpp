@@ -41,6 +41,14 @@ template <int Dim>
 [[nodiscard]] InterfaceStencil<Dim> make_interface_stencil(const StripLayout<Dim>& strip,
                                                            const IndexBox<Dim>& nodes);
 
+/// The stencil of `nodes` (a one-node-thick box) on the node layer one cell
+/// outside the face, the far corners of the cells k-w: the layer a uGIMP particle
+/// within its half-width of the face reaches (see outer_node_terms). Slots as in
+/// InterfaceStencil. Throws mpfd::Error if the box is not on that layer.
+template <int Dim>
+[[nodiscard]] InterfaceStencil<Dim> make_outer_node_stencil(const StripLayout<Dim>& strip,
+                                                            const IndexBox<Dim>& nodes);
+
 /// The second terms of T (4-7) ... (4-9) for each interface node, written to
 /// `add` (an ApplyRegion{interface_nodes, ADD}) from the strip's exported
 /// states and pressure (strip order). The force (4-9) uses p - reference_pressure
@@ -55,6 +63,26 @@ void interface_node_terms(const CellStates<Dim>& strip, std::span<const double> 
                           double reference_pressure, const StripLayout<Dim>& layout,
                           const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
                           const NodeOutputs<Dim>& add, std::span<const double> force_volume = {});
+
+/// T (4-7) ... (4-9) for the node layer outside the face, written to `add`.
+/// With linear shapes no particle of the zone reaches it; a uGIMP particle of
+/// half-width a (grid units) does once it lies within a of the face (injected
+/// particles, ~u Δt from the face, nearly always), and without the FDM there
+/// that node holds only the particle's sliver of mass and its own stress: it
+/// flies off and the particle expands as into a vacuum. The FDM's cells are the
+/// material there, so the layer gets what it gets at any node: the cells k-w
+/// (`strip`'s outer cells) and k-w-1 (`beyond`, one per face cell) as particles
+/// of volume V_c at their centres, N_Ic = 2^-Dim. Both push with V_c (a uniform
+/// pressure leaves the node at rest; face_push_volume is the face node's balance
+/// against the zone's particles). A cell-sized uGIMP particle (a = 1/2) at a cell
+/// centre has exactly these linear weights, so this is also the uGIMP P2G of the
+/// FDM cells; a = 1/2 or less reaches no node farther out.
+template <int Dim>
+void outer_node_terms(const CellStates<Dim>& strip, std::span<const double> strip_pressure,
+                      const CellStates<Dim>& beyond, std::span<const double> beyond_pressure,
+                      double reference_pressure, const StripLayout<Dim>& layout,
+                      const InterfaceStencil<Dim>& stencil, const CellGeometry<Dim>& geometry,
+                      const NodeOutputs<Dim>& add);
 
 /// The volume of the FDM cell k-w in (4-9) that makes it push on the face nodes
 /// as the MPM's own particles would (a departure from T, docs/coupler.md,

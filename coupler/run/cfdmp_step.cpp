@@ -70,6 +70,10 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
                                                {face_axis, layout.face_side});
   stencil_ = handshake::make_interface_stencil(strip_layout_,
                                                to_kernel_box<Dim>(layout.interface_nodes, layout));
+  outer_nodes_ = mpm_reaches_outer_nodes(scene);
+  if (outer_nodes_)
+    outer_stencil_ = handshake::make_outer_node_stencil(
+        strip_layout_, to_kernel_box<Dim>(layout.outer_nodes, layout));
   ghost_cells_ = to_kernel_box<Dim>(layout.ghost_cells, layout);
   ghost_nodes_ = to_kernel_box<Dim>(layout.ghost_nodes, layout);
   face_cells_ = to_kernel_box<Dim>(layout.face_cells, layout);
@@ -138,6 +142,10 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   }
   add_export(fdm, "strip_cells", {"rho", "momentum", "E", "pressure"});
   fdm_ops_.push_back(Op::export_strip);
+  if (outer_nodes_) {
+    add_export(fdm, "beyond_cells", {"rho", "momentum", "E", "pressure"});
+    fdm_ops_.push_back(Op::export_beyond);
+  }
   if (plan.advance && features_.fdm_face_crossing) {
     add_export(fdm, "coupling_face", {"crossed_mass", "crossed_momentum", "crossed_energy"});
     fdm_ops_.push_back(Op::export_face);
@@ -398,6 +406,24 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
                    to_wire_vectors<Dim>(force, layout_, {0, 0, 0}, scratch_.wire));
   add_apply(mpm, "interface_nodes", v1::ApplyRegion::MODE_ADD);
   mpm_ops_.push_back(Op::apply);
+  if (!outer_nodes_) return;
+  // uGIMP: the node layer outside the face, which the particles near the face reach.
+  const std::size_t m = outer_stencil_.cells.size();
+  mass.resize(m);
+  momentum.resize(m);
+  force.resize(m);
+  handshake::outer_node_terms<Dim>(
+      {strip_now_.rho, strip_now_.momentum, strip_now_.energy}, strip_now_.pressure,
+      {beyond_.rho, beyond_.momentum, beyond_.energy}, beyond_.pressure,
+      scene_.solver.mpm.reference_pressure, strip_layout_, outer_stencil_, geometry_,
+      {mass, momentum, force});
+  cosim::add_array(mpm, {"outer_nodes", "mass", {}, "kg"}, std::span<const double>(mass));
+  cosim::add_array(mpm, {"outer_nodes", "momentum", {m, 3}, "kg*m/s"},
+                   to_wire_vectors<Dim>(momentum, layout_, {0, 0, 0}, scratch_.wire));
+  cosim::add_array(mpm, {"outer_nodes", "internal_force", {m, 3}, "N"},
+                   to_wire_vectors<Dim>(force, layout_, {0, 0, 0}, scratch_.wire));
+  add_apply(mpm, "outer_nodes", v1::ApplyRegion::MODE_ADD);
+  mpm_ops_.push_back(Op::apply);
 }
 
 template <int Dim>
@@ -458,6 +484,12 @@ void CfdmpStep<Dim>::read_fdm(const StepPlan& plan, const cosim::Message& reply)
         rule_.min_particle_volume = geometry_.cell_volume / (kMaxDensification * per_cell);
         rule_.check();
       }
+    } else if (fdm_ops_[i] == Op::export_beyond) {
+      const std::size_t n = strip_layout_.face_cells();
+      read_doubles(reply, kFdm, "beyond_cells", "rho", n, beyond_.rho);
+      read_doubles(reply, kFdm, "beyond_cells", "E", n, beyond_.energy);
+      read_doubles(reply, kFdm, "beyond_cells", "pressure", n, beyond_.pressure);
+      read_wire_vectors<Dim>(reply, kFdm, "beyond_cells", "momentum", n, layout_, beyond_.momentum);
     } else if (fdm_ops_[i] == Op::export_face) {
       read_crossed(reply);
     } else if (fdm_ops_[i] == Op::export_owned) {

@@ -4,8 +4,10 @@
 // crosses between steps: the strip_cells of t^{n-1} and t^n, the ghost_nodes of
 // t^n, the particles removed in the last step and the face parcels.
 //   FDM: [apply deposit_cells ADD, apply ghost_cells SET, advance, export strip_cells,
-//         (export coupling_face: v1.1), (export fdm_owned), propose_dt]
-//   MPM: [inject "injected", apply interface_nodes ADD, advance, export ghost_nodes,
+//         (export beyond_cells: uGIMP), (export coupling_face: v1.1), (export fdm_owned),
+//         propose_dt]
+//   MPM: [inject "injected", apply interface_nodes ADD, (apply outer_nodes ADD: uGIMP),
+//         advance, export ghost_nodes,
 //         export face_particles, remove "crossed" (left mpm_zone), (export mpm_zone),
 //         propose_dt]
 // A step without advance (step 0, and the one before each output) keeps only the
@@ -106,6 +108,7 @@ class CfdmpStep {
     inject,
     advance,
     export_strip,
+    export_beyond,
     export_face,
     export_owned,
     export_ghost,
@@ -144,6 +147,8 @@ class CfdmpStep {
   handshake::CellGeometry<Dim> geometry_;
   handshake::StripLayout<Dim> strip_layout_;
   handshake::InterfaceStencil<Dim> stencil_;
+  bool outer_nodes_ = false;  ///< uGIMP MPM: feed the node layer outside the face too
+  handshake::InterfaceStencil<Dim> outer_stencil_;
   handshake::IndexBox<Dim> ghost_cells_;
   handshake::IndexBox<Dim> ghost_nodes_;
   handshake::IndexBox<Dim> face_cells_;  ///< the cells k-w+1, C order = face cells
@@ -159,6 +164,7 @@ class CfdmpStep {
   std::uint64_t next_id_ = std::uint64_t{1} << 48;  ///< injected ids, far above the MPM's own
 
   Strip strip_now_, strip_prev_;
+  Strip beyond_;  ///< cells k-w-1 of t^n, per face cell (outer_nodes_ only)
   double strip_dt_ = std::numeric_limits<double>::infinity();
   bool flux_due_ = false;
   double dt_last_ = 0;

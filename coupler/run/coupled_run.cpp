@@ -43,6 +43,10 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
       make_region("strip_cells", cells, layout.strip_cells, {"rho", "momentum", "E", "pressure"});
   *fdm.add_regions() =
       make_region("deposit_cells", cells, layout.deposit_cells, {"rho", "momentum", "E"});
+  const bool outer_nodes = mpm_reaches_outer_nodes(scene);
+  if (outer_nodes)
+    *fdm.add_regions() = make_region("beyond_cells", cells, layout.beyond_cells,
+                                     {"rho", "momentum", "E", "pressure"});
   // Audit regions: contents, and what left through their domain faces (v1.1) when offered.
   const auto audit_region = [&](std::string_view name, const WireBox& box) {
     auto region = make_region(name, cells, box, {"rho", "momentum", "E"});
@@ -73,6 +77,9 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
                                    {"mass", "momentum", "internal_energy"});
   *mpm.add_regions() = make_region("interface_nodes", v1::REGION_KIND_NODES, layout.interface_nodes,
                                    {"mass", "momentum", "internal_force"});
+  if (outer_nodes)
+    *mpm.add_regions() = make_region("outer_nodes", v1::REGION_KIND_NODES, layout.outer_nodes,
+                                     {"mass", "momentum", "internal_force"});
   *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
                                    {"mass", "position"});
   *mpm.add_regions() = features.mpm_outflow

@@ -36,6 +36,10 @@ WireBox nodes_of(WireBox cells, const WireIndex& grid_cells) {
 
 }  // namespace
 
+bool mpm_reaches_outer_nodes(const config::Scene& scene) {
+  return scene.solver.mpm.shape_function != config::ShapeFunction::linear;
+}
+
 std::string box_text(const WireBox& box) {
   std::string text;
   for (int a = 0; a < 3; ++a)
@@ -120,6 +124,10 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
                 " in a grid of " + std::to_string(n) + " cells");
   layout.ghost_nodes = nodes_of(layout.ghost_cells, layout.cells);
   layout.interface_nodes = along(nodes_of(whole, layout.cells), a, face, face + 1);
+  const std::int64_t outer = face - layout.face_side;
+  layout.outer_nodes = along(nodes_of(whole, layout.cells), a, outer, outer + 1);
+  layout.beyond_cells = layout.face_side > 0 ? along(whole, a, face - 2, face - 1)
+                                             : along(whole, a, face + 1, face + 2);
   layout.face_cells =
       layout.face_side > 0 ? along(whole, a, face, face + 1) : along(whole, a, face - 1, face);
   layout.coupling_face = along(whole, a, face, face + 1);

@@ -46,6 +46,8 @@ struct ZoneLayout {
   WireBox deposit_cells;    ///< cells outside the face where crossing particles land
   WireBox ghost_nodes;      ///< corner nodes of the ghost cells
   WireBox interface_nodes;  ///< the node layer on the face
+  WireBox beyond_cells;     ///< cells k-w-1 (uGIMP MPM: they feed outer_nodes)
+  WireBox outer_nodes;      ///< the node layer one cell outside the face (uGIMP MPM only)
   WireBox face_cells;       ///< the cells k-w+1: the MPM zone's cell layer on the face
   WireBox coupling_face;  ///< v1.1 FACES box: the faces at node `face` (one index along face_axis)
 };
@@ -56,6 +58,11 @@ struct ZoneLayout {
 /// the domain across that face, or when the FDM zone leaves no room for the
 /// strip, deposit and ghost layers.
 [[nodiscard]] ZoneLayout make_zone_layout(const config::Scene& scene);
+
+/// True when the scene's MPM particles reach one node layer outside their cell
+/// (uGIMP, cpGIMP): the coupler then also feeds outer_nodes from the FDM
+/// (handshake::outer_node_terms). Linear shapes stop at the face node layer.
+[[nodiscard]] bool mpm_reaches_outer_nodes(const config::Scene& scene);
 
 /// "[lo0, hi0) x [lo1, hi1) x [lo2, hi2)", for messages.
 [[nodiscard]] std::string box_text(const WireBox& box);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/core/error.hpp"
+#include "mpm_solver/shape_functions.hpp"
 #include "tests/unit/coupler/handshake/handshake_test_support.hpp"
 
 namespace mpfd::coupler::handshake {
@@ -226,6 +227,142 @@ TYPED_TEST(InterfaceNodes, Reference_pressure_comes_off_the_force_only) {
     EXPECT_EQ((at_ambient.momentum[i] - full.momentum[i]).norm(), 0.0);
   }
   EXPECT_TRUE(pushed);  // without p_ref the face nodes do feel the cells' pressure
+}
+
+// The node layer outside the face (uGIMP MPM): with cells k-w and k-w-1 in the
+// same state it is an interior node of the FDM's material, full mass and
+// momentum and no force, on both sides and every axis.
+TYPED_TEST(InterfaceNodes, Outer_nodes_of_a_uniform_state_are_interior_nodes) {
+  constexpr int Dim = TypeParam::value;
+  const auto g = test::test_geometry<Dim>();
+  const double rho = 1.2, pressure = 1.0e5;
+  const Vec<Dim> v = test::some_velocity<Dim>();
+  for (int axis = 0; axis < Dim; ++axis) {
+    for (int side : {1, -1}) {
+      const ZoneFace face{axis, side};
+      const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+      auto nodes = test::cube<Dim>(1, 6);  // clear of the strip's lateral edges
+      nodes.lo[axis] = layout.face_node_layer() - side;
+      nodes.hi[axis] = nodes.lo[axis] + 1;
+      const std::size_t n = layout.box.count(), m = layout.face_cells();
+      const Strip<Dim> strip{std::vector<double>(n, rho), std::vector<Vec<Dim>>(n, rho * v),
+                             std::vector<double>(n, 0.0), std::vector<double>(n, pressure)};
+      const Strip<Dim> beyond{std::vector<double>(m, rho), std::vector<Vec<Dim>>(m, rho * v),
+                              std::vector<double>(m, 0.0), std::vector<double>(m, pressure)};
+      Added<Dim> add(nodes.count());
+      outer_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure,
+                            {beyond.rho, beyond.momentum, beyond.energy}, beyond.pressure, 0.0,
+                            layout, make_outer_node_stencil(layout, nodes), g, add.outputs());
+      const double node_mass = rho * g.cell_volume;
+      for (std::size_t i = 0; i < nodes.count(); ++i) {
+        EXPECT_NEAR(add.mass[i], node_mass, kTol * node_mass);
+        EXPECT_LE((add.momentum[i] - node_mass * v).norm(), kTol * node_mass * v.norm());
+        EXPECT_LE(add.force[i].norm(), kTol * pressure * g.face_area(axis))
+            << "axis " << axis << " side " << side << " node " << i;
+      }
+    }
+  }
+}
+
+// Over the whole outer layer each cell k-w and k-w-1 gives the half of itself
+// in the layer's support, and the force is the pressure difference across the
+// face between them, p_(k-w-1) - p_(k-w), on each face cell's area.
+TYPED_TEST(InterfaceNodes, Outer_nodes_take_half_of_both_cells_and_their_pressure_difference) {
+  constexpr int Dim = TypeParam::value;
+  const auto g = test::test_geometry<Dim>();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.5, 1.5);
+  for (int side : {1, -1}) {
+    const ZoneFace face{Dim - 1, side};
+    const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+    auto nodes = test::cube<Dim>(0, 7);  // every node of the layer
+    nodes.lo[face.axis] = layout.face_node_layer() - side;
+    nodes.hi[face.axis] = nodes.lo[face.axis] + 1;
+    const auto fill = [&](std::size_t count) {
+      Strip<Dim> cells{{}, {}, std::vector<double>(count, 0.0), {}};
+      for (std::size_t c = 0; c < count; ++c) {
+        cells.rho.push_back(unit(random));
+        Vec<Dim> momentum;
+        for (int a = 0; a < Dim; ++a) momentum(a) = 100 * (unit(random) - 1);
+        cells.momentum.push_back(momentum);
+        cells.pressure.push_back(1e5 * unit(random));
+      }
+      return cells;
+    };
+    const Strip<Dim> strip = fill(layout.box.count());
+    const Strip<Dim> beyond = fill(layout.face_cells());
+    Added<Dim> add(nodes.count());
+    outer_node_terms<Dim>({strip.rho, strip.momentum, strip.energy}, strip.pressure,
+                          {beyond.rho, beyond.momentum, beyond.energy}, beyond.pressure, 0.0,
+                          layout, make_outer_node_stencil(layout, nodes), g, add.outputs());
+    double mass = 0, expected_mass = 0;
+    Vec<Dim> momentum = Vec<Dim>::Zero(), expected_momentum = Vec<Dim>::Zero();
+    Vec<Dim> force = Vec<Dim>::Zero(), expected_force = Vec<Dim>::Zero();
+    for (std::size_t i = 0; i < nodes.count(); ++i) {
+      mass += add.mass[i];
+      momentum += add.momentum[i];
+      force += add.force[i];
+    }
+    for (std::size_t t = 0; t < layout.face_cells(); ++t) {
+      const std::size_t c = layout.outer[t];
+      expected_mass += 0.5 * (strip.rho[c] + beyond.rho[t]) * g.cell_volume;
+      expected_momentum += 0.5 * (strip.momentum[c] + beyond.momentum[t]) * g.cell_volume;
+      expected_force(face.axis) +=
+          side * (beyond.pressure[t] - strip.pressure[c]) * g.face_area(face.axis);
+    }
+    EXPECT_NEAR(mass, expected_mass, kTol * expected_mass);
+    EXPECT_LE((momentum - expected_momentum).norm(), kTol * expected_momentum.norm());
+    EXPECT_LE((force - expected_force).norm(), 1e-9 * 1e5 * g.face_area(face.axis));
+  }
+}
+
+// Why the outer layer needs the FDM (1D, uniform state at rest): a uGIMP
+// particle (half-width a = 1/4, 2 per cell) 0.05 h from the face reaches the node
+// one cell outside with S = (1 + a - r)^2 / (4a) = 0.04 of its mass and pushes it
+// with its pressure, p V_p dS/dx. Alone there (linear-shape coupling, which
+// never fed that layer) the node accelerates at p S' / (ρ S) = 10 p / (ρ h): the
+// particle expands as into a vacuum. With cells k-w and k-w-1 at the same state
+// the node holds ρ V_c more and moves at about 0.2 p / (ρ h).
+TEST(InterfaceNodes1D, A_gimp_particle_at_the_face_meets_the_fdm_at_the_outer_node) {
+  const auto g = test::test_geometry<1>();
+  const double rho = 1.2, pressure = 1.0e5, a = 0.25;
+  const ZoneFace face{0, 1};
+  const auto layout = make_strip_layout(strip_box<1>(face), face);
+  const std::int64_t outer = layout.face_node_layer() - 1;
+  const IndexBox<1> nodes{{outer}, {outer + 1}};
+  const double mass = 0.5 * rho * g.cell_volume, volume = 0.5 * g.cell_volume;
+  const double xi = static_cast<double>(layout.face_node_layer()) + 0.05;  // grid units
+  mpm::AxisWeights<3> w;
+  mpm::gimp_weights(xi, a, 1.0 / g.spacing(0), w);
+  ASSERT_EQ(w.first, outer);
+  ASSERT_NEAR(w.weight[0], 0.04, 1e-12);
+  // f_I = -Σ ∇S σ V = p V ∇S for σ = -p I.
+  const double particle_mass = w.weight[0] * mass,
+               particle_force = pressure * volume * w.gradient[0];
+  const double scale = pressure / (rho * g.spacing(0));
+  EXPECT_NEAR(std::abs(particle_force / particle_mass), 10 * scale, 1e-9 * scale);
+
+  const std::size_t n = layout.box.count();
+  const Strip<1> strip{std::vector<double>(n, rho), std::vector<Vec<1>>(n, Vec<1>::Zero()),
+                       std::vector<double>(n, 0.0), std::vector<double>(n, pressure)};
+  const Strip<1> beyond{{rho}, {Vec<1>::Zero()}, {0.0}, {pressure}};
+  Added<1> add(1);
+  outer_node_terms<1>({strip.rho, strip.momentum, strip.energy}, strip.pressure,
+                      {beyond.rho, beyond.momentum, beyond.energy}, beyond.pressure, 0.0, layout,
+                      make_outer_node_stencil(layout, nodes), g, add.outputs());
+  const double acceleration = (particle_force + add.force[0](0)) / (particle_mass + add.mass[0]);
+  EXPECT_NEAR(std::abs(acceleration), 0.2 / 1.02 * scale, 1e-9 * scale);
+}
+
+TEST(InterfaceNodes2D, Outer_node_box_must_lie_one_cell_outside_the_face) {
+  for (const int side : {1, -1}) {
+    const ZoneFace face{0, side};
+    const auto layout = make_strip_layout(IndexBox<2>{{3, 0}, {5, 4}}, face);
+    const std::int64_t outer = layout.face_node_layer() - side;
+    EXPECT_NO_THROW((void)make_outer_node_stencil(layout, IndexBox<2>{{outer, 0}, {outer + 1, 5}}));
+    const std::int64_t f = layout.face_node_layer();
+    EXPECT_THROW((void)make_outer_node_stencil(layout, IndexBox<2>{{f, 0}, {f + 1, 5}}), Error);
+  }
 }
 
 }  // namespace

@@ -42,6 +42,11 @@ TEST(ZoneLayout, Thesis_V6_regions) {
   EXPECT_EQ(box_text(l.face_cells), "[145, 146) x [0, 250) x [0, 1)");
   EXPECT_EQ(box_text(l.fdm_owned), "[0, 145) x [0, 250) x [0, 1)");
   EXPECT_EQ(box_text(l.mpm_zone), "[145, 170) x [0, 250) x [0, 1)");
+  // A uGIMP particle within its half-width of the face reaches node 144; cells 144 and
+  // 143 (k-w, k-w-1) are the FDM's material around it.
+  EXPECT_EQ(box_text(l.outer_nodes), "[144, 145) x [0, 251) x [0, 1)");
+  EXPECT_EQ(box_text(l.beyond_cells), "[143, 144) x [0, 250) x [0, 1)");
+  EXPECT_FALSE(mpm_reaches_outer_nodes(scene));  // linear, the default
 }
 
 TEST(ZoneLayout, Mpm_zone_below_the_face_mirrors_the_regions) {
@@ -59,6 +64,21 @@ TEST(ZoneLayout, Mpm_zone_below_the_face_mirrors_the_regions) {
   EXPECT_EQ(box_text(l.ghost_nodes), "[27, 31) x [0, 1) x [0, 1)");
   EXPECT_EQ(box_text(l.fdm_owned), "[36, 100) x [0, 1) x [0, 1)");
   EXPECT_EQ(box_text(l.face_cells), "[35, 36) x [0, 1) x [0, 1)");  // the inner strip cell
+  EXPECT_EQ(box_text(l.outer_nodes), "[37, 38) x [0, 1) x [0, 1)");
+  EXPECT_EQ(box_text(l.beyond_cells), "[37, 38) x [0, 1) x [0, 1)");
+}
+
+TEST(ZoneLayout, Gimp_and_cpgimp_reach_the_outer_nodes) {
+  const std::string domain = "{lower: [0, 0, 0], upper: [1, 0.01, 0.01], cells: [100, 1, 1]}";
+  const std::string zones =
+      "  fdm: {lower: [0, 0, 0], upper: [0.65, 0.01, 0.01]}\n"
+      "  mpm: {lower: [0.6, 0, 0], upper: [1, 0.01, 0.01]}\n";
+  for (const char* shape : {"linear", "gimp", "cpgimp"}) {
+    const auto scene = config::parse_scene(
+        scene_text(domain, zones, std::string("cfdmp, mpm: {shape_function: ") + shape + "}"),
+        "shape.yaml");
+    EXPECT_EQ(mpm_reaches_outer_nodes(scene), std::string(shape) != "linear") << shape;
+  }
 }
 
 std::string layout_error(const std::string& text) {
