@@ -6,6 +6,7 @@
 #include "common/grid/uniform_grid.hpp"
 #include "coupler/handoff/placeholder.hpp"
 #include "coupler/remap/spherical_to_cartesian.hpp"
+#include "coupler/run/afdmp_fields.hpp"
 #include "coupler/run/wire.hpp"
 
 namespace mpfd::coupler {
@@ -13,13 +14,13 @@ namespace {
 
 namespace region = afdmp_region;
 
-/// The v1.1 outflow_* of `group` (one row each).
-Conserved outflow_of(const cosim::Message& reply, const char* group) {
+/// The v1.1 outflow_* of `group` (one row each) that solver `peer` exported.
+Conserved outflow_of(const cosim::Message& reply, const char* peer, const char* group) {
   Conserved out;
   // Copied while the view lives: a view of a misaligned frame holds its own copy.
   const auto read = [&](const char* name, std::span<double> into) {
     const auto view = cosim::view_array<double>(reply, group, name);
-    check_value_count(reply, "audit", group, name, view.values().size(), into.size());
+    check_value_count(reply, peer, group, name, view.values().size(), into.size());
     std::copy_n(view.values().begin(), into.size(), into.begin());
   };
   read("outflow_mass", {&out.mass, 1});
@@ -38,33 +39,42 @@ Conserved scaled(const Conserved& c, double factor) {
 
 }  // namespace
 
-void add_audit_export(cosim::Message& request, bool fdm) {
-  if (fdm)
-    add_export(request, region::kAuditCells,
-               {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"});
-  else
-    add_export(request, region::kAuditParticles,
-               {"mass", "velocity", "internal_energy", "outflow_mass", "outflow_momentum",
-                "outflow_energy"});
+std::vector<std::string> fdm_audit_fields(bool outflow) {
+  return outflow ? field_names(region::kAuditCells, {"rho", "momentum", "E", "outflow_mass",
+                                                     "outflow_momentum", "outflow_energy"})
+                 : field_names(region::kAuditCells, {"rho", "momentum", "E"});
 }
 
-AuditReading fdm_audit_reading(const cosim::Message& reply, double cell_volume) {
-  const auto rho = cosim::view_array<double>(reply, region::kAuditCells, "rho");
-  const auto momentum = cosim::view_array<double>(reply, region::kAuditCells, "momentum");
-  const auto energy = cosim::view_array<double>(reply, region::kAuditCells, "E");
-  return {
-      .held = wire_cell_conserved(rho.values(), momentum.values(), energy.values(), cell_volume),
-      .outflow = outflow_of(reply, region::kAuditCells)};
+std::vector<std::string> mpm_audit_fields(bool outflow) {
+  return outflow ? field_names(region::kAuditParticles,
+                               {"mass", "velocity", "internal_energy", "outflow_mass",
+                                "outflow_momentum", "outflow_energy"})
+                 : field_names(region::kAuditParticles, {"mass", "velocity", "internal_energy"});
 }
 
-AuditReading mpm_audit_reading(const cosim::Message& reply) {
-  const auto mass = cosim::view_array<double>(reply, region::kAuditParticles, "mass");
-  const auto velocity = cosim::view_array<double>(reply, region::kAuditParticles, "velocity");
-  const auto energy = cosim::view_array<double>(reply, region::kAuditParticles, "internal_energy");
+AuditReading fdm_audit_reading(const cosim::Message& fields, std::size_t cells, double cell_volume,
+                               bool outflow) {
+  const auto rho = cosim::view_array<double>(fields, region::kAuditCells, "rho");
+  const auto momentum = cosim::view_array<double>(fields, region::kAuditCells, "momentum");
+  const auto energy = cosim::view_array<double>(fields, region::kAuditCells, "E");
+  check_value_count(fields, "fdm", region::kAuditCells, "rho", rho.values().size(), cells);
+  check_value_count(fields, "fdm", region::kAuditCells, "momentum", momentum.values().size(),
+                    3 * cells);
+  check_value_count(fields, "fdm", region::kAuditCells, "E", energy.values().size(), cells);
+  AuditReading reading;
+  reading.held = wire_cell_conserved(rho.values(), momentum.values(), energy.values(), cell_volume);
+  if (outflow) reading.outflow = outflow_of(fields, "fdm", region::kAuditCells);
+  return reading;
+}
+
+AuditReading mpm_audit_reading(const cosim::Message& fields, bool outflow) {
+  const auto mass = cosim::view_array<double>(fields, region::kAuditParticles, "mass");
+  const auto velocity = cosim::view_array<double>(fields, region::kAuditParticles, "velocity");
+  const auto energy = cosim::view_array<double>(fields, region::kAuditParticles, "internal_energy");
   const std::size_t n = mass.values().size();
-  check_value_count(reply, "mpm", region::kAuditParticles, "velocity", velocity.values().size(),
+  check_value_count(fields, "mpm", region::kAuditParticles, "velocity", velocity.values().size(),
                     3 * n);
-  check_value_count(reply, "mpm", region::kAuditParticles, "internal_energy",
+  check_value_count(fields, "mpm", region::kAuditParticles, "internal_energy",
                     energy.values().size(), n);
   AuditReading reading;
   Conserved& c = reading.held;
@@ -74,13 +84,12 @@ AuditReading mpm_audit_reading(const cosim::Message& reply) {
     for (std::size_t a = 0; a < 3; ++a) {
       const double v = velocity.values()[3 * p + a];
       c.momentum[a] += m * v;
-      c.momentum_scale += std::abs(m * v);
       v2 += v * v;
     }
     c.mass += m;
     c.energy += energy.values()[p] + 0.5 * m * v2;
   }
-  reading.outflow = outflow_of(reply, region::kAuditParticles);
+  if (outflow) reading.outflow = outflow_of(fields, "mpm", region::kAuditParticles);
   return reading;
 }
 

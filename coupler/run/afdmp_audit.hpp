@@ -8,11 +8,14 @@
 //   current   what the holders hold now, each counted once:
 //               1D stage (inside the grid) + ambient fill
 //             + FDM cells - the FSI-zone placeholder (the MPM's FSI particles
-//               stand for that zone until phase 3)
+//               stand for that zone until phase 3; the placeholder is the
+//               ambient state the MPM -> FDM handoff puts there, or the
+//               1D -> 3D remap's ambient fill after a 1D start)
 //             + MPM particles (all of them in phases 1 and 3; the frozen FSI
 //               zone in phase 2);
 //   outflow   the solvers' ledgers (v1.1 outflow_*, since Setup, momentum
-//             also minus the impulse of walls and mirror planes), plus what a
+//             also minus the impulse of walls and mirror planes; taken as 0
+//             for a solver that does not offer boundary_outflow), plus what a
 //             handoff drops on purpose, as named terms: the FSI-face leak at
 //             fdm_to_mpm (the FDM's placeholder cells' gain, T §3.2.3), and,
 //             for momentum only, the vector momentum the 1D -> 3D remap gives
@@ -20,6 +23,8 @@
 //             momentum; its mirror planes' impulse is booked nowhere else).
 // The 1D stage books no outflow: its particles do not leave, and its
 // transmitting surface does no work until the wave reaches it.
+// The readings travel as whole-field exports (proto/README.md §15) in chunks
+// of max_chunk_bytes, as the handoffs' fields do.
 
 #include <map>
 #include <nlohmann/json.hpp>
@@ -41,13 +46,18 @@ struct AuditReading {
   Conserved outflow;
 };
 
-/// Adds the audit export (contents and outflow_*) of the FDM (audit_cells) or
-/// the MPM (audit_particles).
-void add_audit_export(cosim::Message& request, bool fdm);
-/// The FDM's audit_cells of a reply (cells of volume `cell_volume`).
-[[nodiscard]] AuditReading fdm_audit_reading(const cosim::Message& reply, double cell_volume);
-/// The MPM's audit_particles of a reply.
-[[nodiscard]] AuditReading mpm_audit_reading(const cosim::Message& reply);
+/// The whole-field names of the FDM's audit reading (audit_cells): contents,
+/// and outflow_* when the solver offers boundary_outflow.
+[[nodiscard]] std::vector<std::string> fdm_audit_fields(bool outflow);
+/// The same of the MPM's (audit_particles).
+[[nodiscard]] std::vector<std::string> mpm_audit_fields(bool outflow);
+/// The FDM's audit_cells of an export (`cells` cells of volume `cell_volume`;
+/// outflow 0 without `outflow`). Throws mpfd::Error naming the array whose
+/// row count differs.
+[[nodiscard]] AuditReading fdm_audit_reading(const cosim::Message& fields, std::size_t cells,
+                                             double cell_volume, bool outflow);
+/// The MPM's audit_particles of an export (outflow 0 without `outflow`).
+[[nodiscard]] AuditReading mpm_audit_reading(const cosim::Message& fields, bool outflow);
 
 /// What a spherical_to_fdm handoff now would give the grid: the 1D stage's
 /// shells inside it (mass, energy; momentum zero, see above) plus the scene's

@@ -158,7 +158,18 @@ AfdmpLayout make_afdmp_layout(const config::Scene& scene) {
   return layout;
 }
 
-AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start) {
+namespace {
+
+/// The v1.1 ledgers (proto/README.md §14) of an audit region.
+void add_outflow_quantities(v1::Region& region) {
+  for (const char* q : {"outflow_mass", "outflow_momentum", "outflow_energy"})
+    region.add_quantities(q);
+}
+
+}  // namespace
+
+AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start,
+                                 AuditOutflow outflow) {
   namespace r = afdmp_region;
   using Kind = v1::RegionKind;
   AfdmpRegions out;
@@ -177,9 +188,9 @@ AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start) {
     out.fdm.push_back(make_region(r::kFsiCells, Kind::REGION_KIND_CELLS, *layout.fsi_cells,
                                   {"rho", "momentum", "E"}));
   }
-  out.fdm.push_back(
-      make_region(r::kAuditCells, Kind::REGION_KIND_CELLS, layout.all_cells,
-                  {"rho", "momentum", "E", "outflow_mass", "outflow_momentum", "outflow_energy"}));
+  out.fdm.push_back(make_region(r::kAuditCells, Kind::REGION_KIND_CELLS, layout.all_cells,
+                                {"rho", "momentum", "E"}));
+  if (outflow.fdm) add_outflow_quantities(out.fdm.back());
   if (start == AfdmpStart::spherical && !layout.fsi_cells) return out;
   out.mpm.push_back(make_region(r::kFluidParticles, Kind::REGION_KIND_PARTICLES, layout.fluid_cells,
                                 {"id", "position", "velocity", "mass", "volume", "internal_energy",
@@ -191,8 +202,8 @@ AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start) {
     out.mpm.push_back(make_region(r::kChargeParticles, Kind::REGION_KIND_PARTICLES,
                                   layout.charge_cells, {"burn_fraction", "material"}));
   out.mpm.push_back(make_region(r::kAuditParticles, Kind::REGION_KIND_PARTICLES, layout.all_cells,
-                                {"mass", "velocity", "internal_energy", "outflow_mass",
-                                 "outflow_momentum", "outflow_energy"}));
+                                {"mass", "velocity", "internal_energy"}));
+  if (outflow.mpm) add_outflow_quantities(out.mpm.back());
   return out;
 }
 

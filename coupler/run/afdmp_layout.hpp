@@ -76,7 +76,14 @@ struct AfdmpRegions {
   std::vector<v1::Region> fdm;
   std::vector<v1::Region> mpm;
 };
-[[nodiscard]] AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start);
+/// Which solvers offer boundary_outflow (v1.1, proto/README.md §14): only
+/// they get outflow_* in their audit region; a v1.0 solver keeps v1.0.
+struct AuditOutflow {
+  bool fdm = true;
+  bool mpm = true;
+};
+[[nodiscard]] AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start,
+                                               AuditOutflow outflow = {});
 
 /// A wire box as the handoff kernels' cell box (same cells, same axes).
 [[nodiscard]] handoff::CellBox to_cell_box(const WireBox& box);

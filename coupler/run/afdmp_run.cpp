@@ -21,6 +21,7 @@
 #include "coupler/run/afdmp_handoffs.hpp"
 #include "coupler/run/afdmp_layout.hpp"
 #include "coupler/run/afdmp_phase.hpp"
+#include "coupler/run/field_transfer.hpp"
 #include "coupler/run/gauges.hpp"
 #include "coupler/run/session.hpp"
 #include "coupler/run/spherical_stage.hpp"
@@ -65,13 +66,26 @@ void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed, b
   };
   need(0, "field_chunks");
   need(0, "tracer_regions");
-  need(0, "boundary_outflow");  // the run-long audit (afdmp_audit.hpp)
   if (fsi_zone) need(0, "material_fields");
   if (mpm_needed) {
     need(1, "field_chunks");
     need(1, "particles");
-    need(1, "boundary_outflow");
   }
+}
+
+/// The run-long audit's outflow ledgers (v1.1 boundary_outflow): a solver that
+/// does not offer them keeps the v1.0 behaviour (proto/README.md §14), its
+/// outflow taken as 0 with a warning; summary.json details.protocol says so.
+AuditOutflow audit_outflow(const std::vector<v1::Hello>& hellos, bool mpm_needed) {
+  const AuditOutflow outflow{.fdm = offers(hellos[0], "boundary_outflow"),
+                             .mpm = !mpm_needed || offers(hellos[1], "boundary_outflow")};
+  const Logger logger("coupler");
+  for (std::size_t s = 0; s < 2; ++s)
+    if (!(s == 0 ? outflow.fdm : outflow.mpm))
+      logger.warn("AFDMP: solver '", kPeers[s],
+                  "' does not offer boundary_outflow (proto/README.md §14): the run-long audit "
+                  "takes its outflow as 0, so what leaves through open faces counts as an error");
+  return outflow;
 }
 
 double proposed_dt(const cosim::Message& reply, const std::string& peer) {
@@ -82,10 +96,11 @@ double proposed_dt(const cosim::Message& reply, const std::string& peer) {
 
 class AfdmpLoop {
  public:
-  AfdmpLoop(const config::Scene& scene, const AfdmpLayout& layout, cosim::Hub& hub,
-            io::RunSummary& summary, const CoupledRunOptions& options)
+  AfdmpLoop(const config::Scene& scene, const AfdmpLayout& layout, AuditOutflow outflow,
+            cosim::Hub& hub, io::RunSummary& summary, const CoupledRunOptions& options)
       : scene_(scene),
         layout_(layout),
+        outflow_(outflow),
         start_(start_of(scene)),
         machine_({.start = start_,
                   .end_time = scene.time.end,
@@ -98,9 +113,8 @@ class AfdmpLoop {
         summary_(summary),
         options_(options),
         settings_{.max_chunk_bytes = options.max_chunk_bytes, .timeout = options.handoff_timeout},
-        cell_volume_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
-                                                    scene.domain.cells)
-                         .cell_volume()) {
+        grid_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
+                                             scene.domain.cells)) {
     for (const auto& peer : kPeers) contact_[peer] = Clock::now();
   }
 
@@ -188,6 +202,7 @@ class AfdmpLoop {
                                   {"handoffs", handoffs_},
                                   {"audit", audit_.summary()},
                                   {"outputs", outputs_}});
+    summary_.set_detail("protocol", {{"fdm_outflow", outflow_.fdm}, {"mpm_outflow", outflow_.mpm}});
     summary_.write(options_.out_dir / "summary.json");
   }
 
@@ -326,7 +341,9 @@ class AfdmpLoop {
           audit_.clear_mpm();
         }
       }
-      // Both starts leave the FSI zone's cells the scene's initial state.
+      // The FSI zone's cells: the MPM -> FDM handoff fills them with the ambient state;
+      // the 1D -> 3D remap gives them its ambient fill, the same while the 1D stage's
+      // ball stays outside the zone (else the difference shows as the fsi_face_leak).
       placeholder_ = placeholder_conserved(scene_, layout_);
       holder_ = "fdm";
       contact_["fdm"] = Clock::now();
@@ -423,13 +440,17 @@ class AfdmpLoop {
       audit_.set_stage(stage_and_fill(scene_, *stage_));
       return;
     }
-    cosim::Message request;
-    add_audit_export(request, who == "fdm");
-    const cosim::Message reply = send_and_receive(who, request);
-    if (who == "fdm")
-      audit_.set_fdm(fdm_audit_reading(reply, cell_volume_));
+    // Chunked as the handoffs' fields: a whole grid in one reply could pass max_message_bytes.
+    const bool fdm = who == "fdm";
+    const auto names = fdm ? fdm_audit_fields(outflow_.fdm) : mpm_audit_fields(outflow_.mpm);
+    const cosim::Message fields = export_fields(hub_, who, "audit", names, options_.max_chunk_bytes,
+                                                options_.handoff_timeout);
+    contact_[who] = Clock::now();
+    if (fdm)
+      audit_.set_fdm(fdm_audit_reading(fields, static_cast<std::size_t>(grid_.cell_count()),
+                                       grid_.cell_volume(), outflow_.fdm));
     else
-      audit_.set_mpm(mpm_audit_reading(reply));
+      audit_.set_mpm(mpm_audit_reading(fields, outflow_.mpm));
   }
 
   /// Output of the solver that holds the state now (the last phase's, once done),
@@ -483,6 +504,7 @@ class AfdmpLoop {
 
   const config::Scene& scene_;
   const AfdmpLayout& layout_;
+  AuditOutflow outflow_;
   AfdmpStart start_;
   PhaseMachine machine_;
   std::vector<int> explosive_;
@@ -492,7 +514,7 @@ class AfdmpLoop {
   io::RunSummary& summary_;
   const CoupledRunOptions& options_;
   HandoffSettings settings_;
-  double cell_volume_;  ///< of the scene's grid [m^3]
+  grid::UniformGrid grid_;  ///< the scene's
   RunLongAudit audit_;
   std::optional<SphericalStage> stage_;
   std::string holder_ = "mpm";  ///< who holds the state: "mpm", "spherical" or "fdm"
@@ -522,13 +544,15 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
   const AfdmpStart start = start_of(scene);
   const auto body = [&](const std::vector<v1::Hello>& hellos, io::RunSummary& summary,
                         std::set<std::string>& retired) {
-    check_capabilities(hellos, start == AfdmpStart::mpm || layout.fsi_cells.has_value(),
-                       layout.fsi_cells.has_value());
-    auto messages = setups(scene, scene_text, afdmp_setup_regions(layout, start), options.out_dir);
+    const bool mpm_needed = start == AfdmpStart::mpm || layout.fsi_cells.has_value();
+    check_capabilities(hellos, mpm_needed, layout.fsi_cells.has_value());
+    const AuditOutflow outflow = audit_outflow(hellos, mpm_needed);
+    auto messages =
+        setups(scene, scene_text, afdmp_setup_regions(layout, start, outflow), options.out_dir);
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kPeers);
-    AfdmpLoop loop(scene, layout, hub, summary, options);
+    AfdmpLoop loop(scene, layout, outflow, hub, summary, options);
     try {
       const CoupledRunReport report = loop.run();
       retired = loop.retired();

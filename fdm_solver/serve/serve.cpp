@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "common/core/log.hpp"
@@ -19,7 +20,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-cosim::v1::Hello hello(bool v1_0_only) {
+cosim::v1::Hello hello(bool v1_0_only, bool boundary_outflow) {
   cosim::v1::Hello hello;
   hello.set_role(cosim::v1::ROLE_EULER_SOLVER);
   hello.set_software("mpfd fdm_solver");
@@ -30,7 +31,8 @@ cosim::v1::Hello hello(bool v1_0_only) {
   if (!v1_0_only)  // v1.1 (proto/README.md §14) and v1.2 (§15)
     for (const char* capability :
          {"face_crossing", "boundary_outflow", "field_chunks", "tracer_regions", "material_fields"})
-      hello.add_capabilities(capability);
+      if (boundary_outflow || std::string_view(capability) != "boundary_outflow")
+        hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
   if (::gethostname(host, sizeof host - 1) == 0) hello.set_host(host);
@@ -111,7 +113,8 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
   cosim::TransportOptions transport;
   transport.idle_timeout = options.idle_timeout;
   cosim::Participant participant(context, options.endpoint, options.name, transport);
-  const cosim::v1::HelloAck session = participant.connect(hello(options.offer_v1_0_only));
+  const cosim::v1::HelloAck session =
+      participant.connect(hello(options.offer_v1_0_only, options.offer_boundary_outflow));
   if (session.major() != cosim::protocol_major) {
     const std::string text = "the coupler chose protocol v" + std::to_string(session.major()) +
                              "; solver '" + options.name + "' speaks v" +

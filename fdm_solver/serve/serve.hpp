@@ -16,6 +16,9 @@ struct ServeOptions {
   /// Offer only protocol v1.0's capabilities (no face_crossing, boundary_outflow):
   /// behaves as a solver written against v1.0, for comparisons and fallback tests.
   bool offer_v1_0_only = false;
+  /// Offer boundary_outflow (v1.1): off, a coupler must treat the solver's outflow
+  /// as v1.0 (0), for fallback tests of the run-long audits.
+  bool offer_boundary_outflow = true;
 };
 
 /// Sends Hello, then answers Setup, Exchange, WriteOutput, Checkpoint,

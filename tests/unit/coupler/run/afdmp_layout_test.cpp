@@ -122,6 +122,10 @@ TEST(AfdmpLayout, SetupRegionsOfTheDesignTable) {
   // start = spherical: no phase-1 trigger on the MPM.
   const AfdmpRegions s = afdmp_setup_regions(l, AfdmpStart::spherical);
   EXPECT_EQ(s.mpm.size(), 3u);
+  // A solver without boundary_outflow gets no outflow_* (proto/README.md §14).
+  const AfdmpRegions v1_0 = afdmp_setup_regions(l, AfdmpStart::mpm, {.fdm = false, .mpm = true});
+  EXPECT_EQ(v1_0.fdm[6].quantities_size(), 3);
+  EXPECT_EQ(v1_0.mpm[3].quantities_size(), 6);
 }
 
 TEST(AfdmpLayout, WithoutFsiZoneTheFluidIsTheWholeGrid) {
