@@ -11,7 +11,10 @@
 // At a cell centre N_Ic = 2^-Dim and ∂N_Ic/∂x_a = s_a / (Δx_a 2^(Dim-1)),
 // s_a = +1 if the node is on the cell's upper side along a, else -1. The FDM
 // term is the MPM internal force -∇N σ V of a fluid particle, σ = -p I. The
-// MPM adds these to its own P2G sums before (2-13) (protocol: ADD).
+// MPM adds these to its own P2G sums before (2-13) (protocol: ADD). With a
+// uGIMP/cpGIMP MPM the node layer one cell outside the face (`outer_nodes`)
+// gets the same terms from cells k-w and k-w-1 (`beyond_cells`), each with
+// volume V_c: a uGIMP particle near the face reaches that layer too.
 
 #include <array>
 #include <cstdint>

@@ -46,8 +46,8 @@ struct ZoneLayout {
   WireBox deposit_cells;    ///< cells outside the face where crossing particles land
   WireBox ghost_nodes;      ///< corner nodes of the ghost cells
   WireBox interface_nodes;  ///< the node layer on the face
-  WireBox beyond_cells;     ///< cells k-w-1 (uGIMP MPM: they feed outer_nodes)
-  WireBox outer_nodes;      ///< the node layer one cell outside the face (uGIMP MPM only)
+  WireBox beyond_cells;     ///< cells k-w-1 (uGIMP/cpGIMP MPM: they feed outer_nodes)
+  WireBox outer_nodes;      ///< node layer one cell outside the face (uGIMP/cpGIMP MPM only)
   WireBox face_cells;       ///< the cells k-w+1: the MPM zone's cell layer on the face
   WireBox coupling_face;  ///< v1.1 FACES box: the faces at node `face` (one index along face_axis)
 };
