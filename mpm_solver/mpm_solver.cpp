@@ -192,12 +192,17 @@ void MpmSolver::advance_to(double end) {
 void MpmSolver::advance(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw Error("mpm: time step must be positive and finite, got " + std::to_string(dt));
-  rebuild_grid();
-  if (contact_) mark_shared_nodes();
+  // A coupler's ghost-node export may have mapped this step already (map_next_step).
+  last_advance_premapped_ = next_map_.valid && loads_on_mapped_blocks();
+  next_map_.valid = false;
+  if (!last_advance_premapped_) {
+    rebuild_grid();
+    if (contact_) mark_shared_nodes();
+    // USAVG's forces are those of the half-updated stress: the first scatter
+    // sums only what the stress does not change.
+    particles_to_grid(first_scatter());
+  }
   const bool usavg = settings_.update == config::MpmUpdate::usavg;
-  // USAVG's forces are those of the half-updated stress: the first scatter
-  // sums only what the stress does not change.
-  particles_to_grid(usavg ? Scatter::mass_and_momentum : Scatter::all);
   record_added_node_state();
   if (!usavg) {
     apply_node_loads(NodeLoadPass::all);
@@ -390,15 +395,26 @@ void MpmSolver::scatter_stress_sums(std::size_t p, const double (&x)[3], const S
 }
 
 void MpmSolver::particles_to_grid(Scatter what) {
+  // Per-node sums only some scenes need, zeroed here (grow-only: no allocation).
+  if (has_fixed_) fixed_mass_.assign(grid_.node_count(), 0.0);
+  if (what == Scatter::all) zero_stress_sums();
+  scatter_particles(what, 0);
+}
+
+void MpmSolver::scatter_particles(Scatter what, std::size_t from) {
   const auto& ps = particles_;
   double* node_mass = grid_.mass.data();
   double* node_momentum[3] = {grid_.momentum[0].data(), grid_.momentum[1].data(),
                               grid_.momentum[2].data()};
   double* node_force[3] = {grid_.force[0].data(), grid_.force[1].data(), grid_.force[2].data()};
   auto& cf = contact_fields_;
-  // Per-node sums only some scenes need, zeroed here (grow-only: no allocation).
-  if (has_fixed_) fixed_mass_.assign(grid_.node_count(), 0.0);
-  if (what == Scatter::all) zero_stress_sums();
+  double* box_energy = next_map_.valid ? next_map_energy_.data() : nullptr;
+  const auto for_each = [&](const auto& fn) {
+    if (from == 0)
+      for_each_particle_by_colour(grid_, ps.size(), fn);
+    else
+      for (std::size_t p = from; p < ps.size(); ++p) fn(p);
+  };
   const auto scatter = [&](auto with_stress) {
     constexpr bool kStress = decltype(with_stress)::value;
     dispatch_kernel(
@@ -406,13 +422,24 @@ void MpmSolver::particles_to_grid(Scatter what) {
         [&](auto width, auto mask, auto with_contact) {
           using S = Stencil<decltype(width)::value, decltype(mask)::value>;
           constexpr bool kContact = decltype(with_contact)::value;
-          for_each_particle_by_colour(grid_, ps.size(), [&](std::size_t p) {
+          for_each([&](std::size_t p) {
             const double x[3] = {ps.position[0][p], ps.position[1][p], ps.position[2][p]};
             S s;
             double half_width[3];
             particle_half_width(p, half_width);
             compute_stencil(x, half_width, geometry_, grid_, s);
             const double m = ps.mass[p];
+            if (box_energy != nullptr) {  // e_I of (2-12) where a coupler reads it
+              const int extent[3] = {S::kNx, S::kNy, S::kNz};
+              bool reaches = true;
+              for (int a = 0; a < 3; ++a)
+                reaches = reaches && s.first[a] + extent[a] > next_map_.lo[a] &&
+                          s.first[a] < next_map_.hi[a];
+              if (reaches) {
+                const double e = ps.specific_internal_energy[p];
+                for (int c = 0; c < S::kCount; ++c) box_energy[s.node[c]] += s.weight[c] * m * e;
+              }
+            }
             const double v[3] = {ps.velocity[0][p], ps.velocity[1][p], ps.velocity[2][p]};
             const int body = ps.body[p];
             double sigma[3][3] = {};

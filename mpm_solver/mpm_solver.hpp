@@ -43,6 +43,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -190,6 +191,29 @@ class MpmSolver {
   /// Fills `out` (C order over the box, k fastest) and leaves the grid as it was.
   void map_particles_to_node_box(const grid::Index3& lo, const grid::Index3& hi,
                                  NodeBoxMap& out) const;
+  /// Maps the particles to the grid as the next advance's step 2 would
+  /// (rebuild, (2-12), (2-9), and with MUSL/USL (2-10)), so that the advance
+  /// starts from this map instead of mapping again, and sums over the grid-node
+  /// box [lo, hi) e_I = sum_p N_Ip m_p e_p as (2-12). A coupler exports its
+  /// ghost nodes from it (read_next_step_box): the step's own scatter, not a
+  /// second one. Particles injected before the advance are added to the map
+  /// after the others, so its sums differ from a fresh map in the last bits;
+  /// a removal, a restore, or a load on a node of a block no particle reaches
+  /// makes the advance map afresh.
+  void map_next_step(const grid::Index3& lo, const grid::Index3& hi);
+  /// Whether the next advance starts from a map of map_next_step's.
+  [[nodiscard]] bool has_next_step_map() const { return next_map_.valid; }
+  /// The grid-node box [lo, hi) of that map, if there is one: a checkpoint keeps
+  /// it, so that a restored run maps again and adds later injections in the same order.
+  [[nodiscard]] std::optional<std::array<grid::Index3, 2>> next_step_map_box() const;
+  /// Whether the next advance starts from map_next_step's map of the box [lo, hi).
+  [[nodiscard]] bool next_step_mapped(const grid::Index3& lo, const grid::Index3& hi) const;
+  /// The box's node mass, momentum and e_I from map_next_step's map, as
+  /// map_particles_to_node_box fills them, bit for bit (C order over the box,
+  /// k fastest; `reaching` is left empty). Requires next_step_mapped(lo, hi).
+  void read_next_step_box(const grid::Index3& lo, const grid::Index3& hi, NodeBoxMap& out) const;
+  /// Whether the last advance started from map_next_step's map.
+  [[nodiscard]] bool last_advance_was_premapped() const { return last_advance_premapped_; }
   /// Queues a contribution for the next advance, applied in queue order
   /// after (2-12) and before (2-13) (see the step order above).
   void queue_node_load(const NodeLoad& load);
@@ -212,7 +236,21 @@ class MpmSolver {
   /// what the stress does not change: m_I, p_I, the contact fields' mass,
   /// momentum and mass gradient, the fixed particle sets' mass.
   enum class Scatter { all, mass_and_momentum };
+  /// What step 2 scatters first: USAVG only m_I and p_I, the others everything.
+  [[nodiscard]] Scatter first_scatter() const {
+    return settings_.update == config::MpmUpdate::usavg ? Scatter::mass_and_momentum : Scatter::all;
+  }
+  /// Zeroes the per-node sums of the scenes that need them and scatters every particle.
   void particles_to_grid(Scatter what = Scatter::all);
+  /// The scatter of particles_to_grid: every particle, block by block in colour
+  /// order (from = 0), or the particles from `from` on in index order (those
+  /// appended to a map). With next_map_.valid it also sums e_I over its box.
+  void scatter_particles(Scatter what, std::size_t from);
+  /// Adds the particles from `first` on to map_next_step's map, or drops the
+  /// map when one reaches a block it lacks.
+  void add_to_next_step_map(std::size_t first);
+  /// Whether every queued load lies on a node of the grid's blocks.
+  [[nodiscard]] bool loads_on_mapped_blocks() const;
   /// Zeroes the stress-dependent per-node sums of the scenes that need them
   /// (shear-mode damping's cells, non-reflecting faces').
   void zero_stress_sums();
@@ -303,8 +341,17 @@ class MpmSolver {
   };
   std::vector<AddedNodeState> added_node_state_;
   std::vector<std::int32_t> added_slot_;  // per node: its entry in added_node_state_, or -1
-  std::vector<std::int32_t> home_slot_;   // scratch, per particle
-  std::vector<std::uint8_t> leaving_;     // scratch, per particle
+  /// map_next_step's map: valid until the advance that uses it or a change it
+  /// cannot follow; e_I summed over the storage-coordinate node box [lo, hi).
+  struct NextStepMap {
+    bool valid = false;
+    grid::Index3 lo{}, hi{};
+  };
+  NextStepMap next_map_;
+  std::vector<double> next_map_energy_;  // per node: e_I over next_map_'s box [J]
+  bool last_advance_premapped_ = false;
+  std::vector<std::int32_t> home_slot_;  // scratch, per particle
+  std::vector<std::uint8_t> leaving_;    // scratch, per particle
   double stable_dt_ = 0.0;
   double fastest_speed_ = 0.0;  ///< max over particles of c + |v| when stable_dt_ was set
   double time_ = 0.0;

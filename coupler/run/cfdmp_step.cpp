@@ -168,10 +168,6 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
     add_remove(mpm, "outside", "mpm_zone");
     mpm_ops_.push_back(Op::discard);
   }
-  if (plan.advance || !have_ghost_source_) {
-    add_export(mpm, "ghost_nodes", {"mass", "momentum", "internal_energy"});
-    mpm_ops_.push_back(Op::export_ghost);
-  }
   // Before the removal: the particles it takes lie outside cell k-w+1 anyway, and its
   // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read).
   add_export(mpm, "face_particles", {"mass", "position"});
@@ -179,6 +175,14 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   if (plan.advance) {
     add_remove(mpm, "crossed", "mpm_zone");
     mpm_ops_.push_back(Op::remove);
+  }
+  // After the removal: the MPM maps the next step for this export (map_next_step),
+  // and a removal after it would drop that map. The removed particles go to the FDM
+  // cells (4-19)...(4-21), so the ghost nodes are not to hold them (at w = 5 they lie
+  // 3 or more cells away, beyond any stencil, and the values are the same either way).
+  if (plan.advance || !have_ghost_source_) {
+    add_export(mpm, "ghost_nodes", {"mass", "momentum", "internal_energy"});
+    mpm_ops_.push_back(Op::export_ghost);
   }
   if (plan.audit) {
     if (features_.mpm_outflow)

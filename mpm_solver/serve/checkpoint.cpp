@@ -119,6 +119,9 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     zone.solver.restore(std::move(back.particles), back.injected_body_materials, back.solver_time,
                         back.steps, back.ledger,
                         back.particle_updates);  // checks before it changes anything
+    // The running zone added its later injections to this map: so must this one.
+    if (back.next_step_map_box)
+      zone.solver.map_next_step((*back.next_step_map_box)[0], (*back.next_step_map_box)[1]);
     zone.dormant = false;
   } catch (const cosim::ProtocolError&) {
     throw;

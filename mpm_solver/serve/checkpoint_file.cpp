@@ -93,6 +93,12 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
                                        ledger.momentum[1], ledger.momentum[2],
                                        ledger.energy,      double(ledger.particles_removed)};
   h5.write_dataset("/ledger", audit, {audit.size()}, "kg, kg m/s, kg m/s, kg m/s, J, particles");
+  if (const auto box = solver.next_step_map_box()) {
+    std::vector<std::int64_t> corners;
+    for (const auto& corner : *box)
+      for (const int node : corner) corners.push_back(node);
+    h5.write_dataset("/next_step_map_box", corners, {corners.size()});  // grid nodes lo, hi
+  }
 }
 
 CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone,
@@ -141,6 +147,12 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   back.solver_time = h5.read_attribute("/", "solver_time");
   back.particle_updates = h5.read_attribute("/", "particle_updates");
   back.scene_text = h5.read_string_attribute("/", "scene");
+  if (h5.exists("/next_step_map_box")) {  // absent: no map, or a checkpoint from before maps
+    const auto corners = in.values("/next_step_map_box", 6, "grid node lo, hi");
+    std::array<grid::Index3, 2> box{};
+    for (std::size_t c = 0; c < 6; ++c) box[c / 3][c % 3] = static_cast<int>(corners[c]);
+    back.next_step_map_box = box;
+  }
   return back;
 }
 

@@ -2,10 +2,13 @@
 // The contents of an MPM checkpoint file: every ParticleSet array (doubles in
 // ParticleSet::for_each_double_array order, ids split in two exact halves),
 // the materials of the injected bodies, clock, step, ledger and the scene
-// text, written and read back checked against the running zone.
+// text, and the box of a next-step map (MpmSolver::map_next_step), written
+// and read back checked against the running zone.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +31,8 @@ struct CheckpointContents {
   BoundaryLedger ledger;
   double particle_updates = 0.0;
   std::string scene_text;
+  /// The node box the zone had mapped its next step for (MpmSolver::map_next_step), if any.
+  std::optional<std::array<grid::Index3, 2>> next_step_map_box;
 };
 
 /// Reads `file` for `zone` at the Restore request's `step`. Throws a

@@ -62,7 +62,7 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
   try {
     for (const auto& [region, op] : group_by_region(zone, body)) {
       if (region->kind == cosim::v1::REGION_KIND_NODES)
-        export_node_region(zone.solver, *region, op, zone.node_box_map, fields);
+        export_node_region(zone.solver, *region, op, zone.node_box_map, nullptr, fields);
       else
         export_particle_region(zone.solver, *region, op, fields, zone.particle_scratch);
     }

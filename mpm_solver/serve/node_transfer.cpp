@@ -1,5 +1,6 @@
 #include "mpm_solver/serve/node_transfer.hpp"
 
+#include <chrono>
 #include <cstring>
 
 #include "cosim/arrays.hpp"
@@ -123,9 +124,9 @@ void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
   }
 }
 
-std::uint64_t export_node_region(const MpmSolver& solver, const ZoneRegion& region,
+std::uint64_t export_node_region(MpmSolver& solver, const ZoneRegion& region,
                                  const cosim::v1::ExportRegion& request, NodeBoxMap& map,
-                                 cosim::Message& reply) {
+                                 double* next_step_map_seconds, cosim::Message& reply) {
   std::vector<std::string> names(request.quantities().begin(), request.quantities().end());
   if (names.empty()) names = region.quantities;
   for (const auto& name : names)
@@ -133,7 +134,16 @@ std::uint64_t export_node_region(const MpmSolver& solver, const ZoneRegion& regi
       reject(cosim::v1::ERROR_CODE_UNKNOWN_REGION, region, name,
              name == "internal_force" ? "is applied, not exported"
                                       : "not declared for it in Setup, so it cannot be exported");
-  solver.map_particles_to_node_box(region.lo, region.hi, map);
+  if (next_step_map_seconds != nullptr && !solver.has_next_step_map()) {
+    const auto start = std::chrono::steady_clock::now();
+    solver.map_next_step(region.lo, region.hi);
+    *next_step_map_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  if (solver.next_step_mapped(region.lo, region.hi))
+    solver.read_next_step_box(region.lo, region.hi, map);
+  else
+    solver.map_particles_to_node_box(region.lo, region.hi, map);
   const std::size_t count = region.box_count();
   for (const auto& name : names) {
     if (name == "internal_energy") {

@@ -20,14 +20,17 @@ namespace mpfd::mpm {
 void apply_node_region(MpmSolver& solver, const ZoneRegion& region,
                        cosim::v1::ApplyRegion::Mode mode, const cosim::Message& request);
 
-/// Maps the particles that reach the region to its nodes first
-/// (MpmSolver::map_particles_to_node_box into `map`, the zone's scratch), then
-/// appends one array per asked quantity (none asked: the region's): mass,
-/// momentum of each node, and internal_energy of each cell of
-/// ZoneRegion::cell_count, the nodal sum_p N_Ip m_p e_p at the cell centre
-/// (T (4-3) with the support of (4-1)) [J]. Returns the node count.
-std::uint64_t export_node_region(const MpmSolver& solver, const ZoneRegion& region,
+/// Maps the particles to the region's nodes first, then appends one array per
+/// asked quantity (none asked: the region's): mass, momentum of each node, and
+/// internal_energy of each cell of ZoneRegion::cell_count, the nodal
+/// sum_p N_Ip m_p e_p at the cell centre (T (4-3) with the support of (4-1))
+/// [J]. With `next_step_map_seconds` the map is the next advance's own
+/// (MpmSolver::map_next_step; its wall time is added there, and the advance
+/// reports it as its own) unless another box holds that map; otherwise (or
+/// null: a field export, which changes nothing) the particles that reach the
+/// box are mapped into `map` (the zone's scratch). Returns the node count.
+std::uint64_t export_node_region(MpmSolver& solver, const ZoneRegion& region,
                                  const cosim::v1::ExportRegion& request, NodeBoxMap& map,
-                                 cosim::Message& reply);
+                                 double* next_step_map_seconds, cosim::Message& reply);
 
 }  // namespace mpfd::mpm

@@ -36,7 +36,9 @@ struct ServedZone {
   bool dormant;
   std::optional<io::SnapshotWriter> snapshots;  // made at the first WriteOutput
   SnapshotParticles snapshot_fields;
-  NodeBoxMap node_box_map;           ///< scratch of the NODES exports, kept so they do not allocate
+  NodeBoxMap node_box_map;  ///< scratch of the NODES exports, kept so they do not allocate
+  /// Wall time of the map a NODES export made for the next advance (MpmSolver::map_next_step) [s]
+  double next_step_map_seconds = 0.0;
   ParticleScratch particle_scratch;  ///< scratch of the PARTICLES exports and removals
   std::optional<cosim::FieldAssembly> field_import;  ///< the FieldChunks of an import (v1.2)
 
