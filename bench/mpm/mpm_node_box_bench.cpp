@@ -6,6 +6,9 @@
 //     2 x 2 particles per cell, a hot band in its middle so the particles
 //     leave their lattice (the summation order then matters, as in a run);
 //     shape 0 linear, 1 uGIMP.
+//   MappedStep/<shape>: the same step as a coupled run takes it now: the
+//     ghost_nodes export maps it early (MpmSolver::map_next_step), the box is
+//     read from that map, and the advance starts from it.
 //   GhostNodeBox/<shape>: MpmSolver::map_particles_to_node_box on the nodes
 //     of 3 ghost cells across the zone (CfdmpStep's box for w = 5), after the
 //     same warm-up; counters give the particles reaching it.
@@ -52,6 +55,25 @@ void Step(benchmark::State& state) {
   state.counters["particles"] = static_cast<double>(solver.particles().size());
 }
 BENCHMARK(Step)->Arg(0)->Arg(1)->ArgName("shape")->Iterations(200)->Unit(benchmark::kMicrosecond);
+
+void MappedStep(benchmark::State& state) {
+  const auto scene = zone(state.range(0));
+  mpfd::mpm::MpmSolver solver(scene, mpfd::mpm::MpmSettings::from_scene(scene));
+  warm_up(solver);
+  mpfd::mpm::NodeBoxMap box;
+  for (auto _ : state) {
+    solver.map_next_step({5, 0, 0}, {9, 251, 1});
+    solver.read_next_step_box({5, 0, 0}, {9, 251, 1}, box);
+    solver.advance(solver.stable_dt());
+  }
+  state.counters["particles"] = static_cast<double>(solver.particles().size());
+}
+BENCHMARK(MappedStep)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("shape")
+    ->Iterations(200)
+    ->Unit(benchmark::kMicrosecond);
 
 void GhostNodeBox(benchmark::State& state) {
   const auto scene = zone(state.range(0));
