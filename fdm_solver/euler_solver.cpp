@@ -544,7 +544,8 @@ void EulerSolver::check_grid_of(const EulerState& state, const char* what) const
                 std::to_string(cells) + " cells");
 }
 
-void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet> tracers) {
+void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet> tracers,
+                               const MaterialStartView& start) {
   check_grid_of(cells, "imported");
   const std::size_t count = state_.grid.cell_count();
   std::optional<MultiMaterialTracker> tracker;
@@ -556,9 +557,10 @@ void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet>
     for (std::size_t c = 0; c < count; ++c)
       fallback[c] = state_.material[c] == kMixedMaterial ? 0 : state_.material[c];
     TracerSet points = tracers ? std::move(*tracers) : tracker_->tracers();
-    tracker.emplace(state_.grid, eos_,
-                    tracker_from_points(state_.grid, static_cast<int>(eos_.size()),
-                                        std::move(points), fallback, cells.u[kDensity], energy));
+    tracker.emplace(
+        state_.grid, eos_,
+        tracker_from_points(state_.grid, static_cast<int>(eos_.size()), std::move(points), fallback,
+                            cells.u[kDensity], energy, start));
   }
   // Nothing below throws (but for memory): the import is all or nothing.
   if (tracker && !tracker_) allocate_multi_material();

@@ -16,6 +16,7 @@
 #include "fdm_solver/pencil.hpp"
 #include "fdm_solver/quiet_face_flux.hpp"
 #include "fdm_solver/tracer/multi_material_tracker.hpp"
+#include "fdm_solver/tracer/tracker_import.hpp"
 
 namespace mpfd::fdm {
 
@@ -85,10 +86,12 @@ class EulerSolver {
   /// one-material solver becomes multi-material; without them a tracker is
   /// rebuilt from the tracers it holds. The tracker starts as
   /// tracker_from_points() builds it (each material of a cell at the cell's
-  /// state), then the closure gives the pressures. Clock and outflow carry on;
+  /// state, or in a mixed cell at its own state from `start` where that holds
+  /// one), then the closure gives the pressures. Clock and outflow carry on;
   /// the disturbed box becomes the cells the new state disturbs (so quiet
   /// cells stay skipped). Throws mpfd::Error before changing anything.
-  void import_state(const EulerState& cells, std::optional<TracerSet> tracers);
+  void import_state(const EulerState& cells, std::optional<TracerSet> tracers,
+                    const MaterialStartView& start = {});
 
   [[nodiscard]] Totals totals() const;
   /// What has left through the domain faces since the start (momentum: the

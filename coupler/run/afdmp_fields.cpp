@@ -28,6 +28,12 @@ std::size_t rows_of(const cosim::Message& fields, std::string_view region, std::
   return descriptor.shape_size() == 0 ? 0 : descriptor.shape(0);
 }
 
+bool has_array(const cosim::Message& fields, std::string_view region, std::string_view name) {
+  const auto& arrays = fields.header.arrays();
+  return std::any_of(arrays.begin(), arrays.end(),
+                     [&](const auto& a) { return a.group() == region && a.name() == name; });
+}
+
 std::vector<int> materials_from_wire(std::span<const std::uint32_t> wire) {
   std::vector<int> out(wire.size());
   std::transform(wire.begin(), wire.end(), out.begin(),
@@ -73,6 +79,10 @@ handoff::ParticleSet particles_from_wire(const cosim::Message& fields, std::stri
   const auto mass = view_rows<double>(fields, region, "mass", n, 1);
   const auto energy = view_rows<double>(fields, region, "internal_energy", n, 1);
   const auto material = view_rows<std::uint32_t>(fields, region, "material", n, 1);
+  if (has_array(fields, region, "volume")) {
+    const auto volume = view_rows<double>(fields, region, "volume", n, 1);
+    std::copy(volume.values().begin(), volume.values().end(), particles.volume.begin());
+  }
   for (std::size_t p = 0; p < n; ++p) {
     for (std::size_t a = 0; a < 3; ++a) {
       particles.position[a][p] = position.values()[3 * p + a];
@@ -96,6 +106,29 @@ void add_cells_to_wire(const grid::UniformGrid& grid, const handoff::ConservedVi
   cosim::add_array(out, {region, "rho", {}, "kg/m^3"}, std::move(rho));
   cosim::add_array(out, {region, "momentum", {n, 3}, "kg/(m^2*s)"}, std::move(momentum));
   cosim::add_array(out, {region, "E", {}, "J/m^3"}, std::move(energy));
+}
+
+void add_material_start_to_wire(const grid::UniformGrid& grid, const handoff::MaterialStart& start,
+                                std::string_view region, cosim::Message& out) {
+  const std::size_t n = grid.cell_count();
+  const auto width = static_cast<std::size_t>(start.material_count);
+  struct Field {
+    const std::vector<double>* values;
+    const char* name;
+    const char* unit;
+  };
+  const Field fields[] = {{&start.volume_fraction, "volume_fraction", "1"},
+                          {&start.density, "material_density", "kg/m^3"},
+                          {&start.energy, "material_energy", "J/kg"}};
+  for (const auto& [values, name, unit] : fields) {
+    if (values->size() != n * width)
+      throw Error("material start '" + std::string(name) + "' has " +
+                  std::to_string(values->size()) + " values; expected " + std::to_string(n) +
+                  " cells x " + std::to_string(width) + " materials");
+    std::vector<double> wire(n * width);
+    handoff::grid_to_wire_order(grid.cells(), *values, wire, start.material_count);
+    cosim::add_array(out, {region, name, {n, width}, unit}, std::move(wire));
+  }
 }
 
 void add_tracers_to_wire(const handoff::TracerView& tracers, std::string_view region,

@@ -13,6 +13,7 @@
 #include "common/grid/uniform_grid.hpp"
 #include "cosim/message.hpp"
 #include "coupler/handoff/fdm_to_mpm.hpp"
+#include "coupler/handoff/material_start.hpp"
 #include "coupler/handoff/particle_fields.hpp"
 
 namespace mpfd::coupler {
@@ -22,8 +23,8 @@ namespace mpfd::coupler {
                                                    std::initializer_list<const char*> quantities);
 
 /// Particles of an MPM export: position, velocity [n, 3], mass, internal_energy
-/// [J] and material of `region`. Throws mpfd::Error naming a missing or
-/// inconsistent array.
+/// [J], material and, if the export has it, volume [m^3] (else the volumes stay
+/// 0) of `region`. Throws mpfd::Error naming a missing or inconsistent array.
 [[nodiscard]] handoff::ParticleSet particles_from_wire(const cosim::Message& fields,
                                                        std::string_view region);
 
@@ -31,6 +32,12 @@ namespace mpfd::coupler {
 /// of `region` (wire order).
 void add_cells_to_wire(const grid::UniformGrid& grid, const handoff::ConservedView& cells,
                        std::string_view region, cosim::Message& out);
+
+/// Each material's start (material_start.hpp) of the whole grid `grid` as
+/// volume_fraction, material_density and material_energy [n, materials] of
+/// `region` (wire order).
+void add_material_start_to_wire(const grid::UniformGrid& grid, const handoff::MaterialStart& start,
+                                std::string_view region, cosim::Message& out);
 
 /// Tracers as position [n, 3] and material of `region`.
 void add_tracers_to_wire(const handoff::TracerView& tracers, std::string_view region,

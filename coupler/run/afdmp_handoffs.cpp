@@ -4,11 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
 #include "cosim/arrays.hpp"
 #include "coupler/handoff/detonation_trigger.hpp"
+#include "coupler/handoff/material_start.hpp"
 #include "coupler/handoff/mpm_to_fdm.hpp"
 #include "coupler/handoff/placeholder.hpp"
 #include "coupler/handoff/sub_grid.hpp"
@@ -44,10 +47,12 @@ handoff::ConservedView remapped_view(const remap::CartesianFields& f) {
   return {f.density, {f.momentum[0], f.momentum[1], f.momentum[2]}, f.total_energy};
 }
 
-/// Cells and tracers of the whole grid into the FDM (fields all_cells, all_tracers).
+/// Cells and tracers of the whole grid into the FDM (fields all_cells, all_tracers),
+/// with each material's start in the cells if `start` is given.
 cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
                                            const handoff::ConservedCells& cells,
                                            const handoff::TracerPoints& tracers,
+                                           const handoff::MaterialStart* start,
                                            std::string_view transfer, cosim::Hub& hub,
                                            const HandoffSettings& settings,
                                            FieldTransferStats& stats) {
@@ -55,10 +60,35 @@ cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
   add_cells_to_wire(grid, cells.view(), region::kAllCells, fields);
   add_tracers_to_wire(tracers.view(), region::kAllTracers, fields);
   auto names = field_names(region::kAllCells, {"rho", "momentum", "E"});
+  if (start != nullptr) {
+    add_material_start_to_wire(grid, *start, region::kAllCells, fields);
+    for (auto& name :
+         field_names(region::kAllCells, {"volume_fraction", "material_density", "material_energy"}))
+      names.push_back(std::move(name));
+  }
   for (auto& name : field_names(region::kAllTracers, {"position", "material"}))
     names.push_back(std::move(name));
   return import_fields(hub, "fdm", transfer, fields, names, settings.max_chunk_bytes, true,
                        settings.timeout, &stats);
+}
+
+/// The fluid box's material start in the whole grid; the other cells have none.
+handoff::MaterialStart embed_start(const grid::UniformGrid& grid, const handoff::CellBox& box,
+                                   handoff::MaterialStart start) {
+  const std::size_t rows = grid.cell_count() * static_cast<std::size_t>(start.material_count);
+  for (auto* values : {&start.volume_fraction, &start.density, &start.energy}) {
+    std::vector<double> whole(rows, 0.0);
+    handoff::embed_cells(grid, box, *values, whole, start.material_count);
+    *values = std::move(whole);
+  }
+  return start;
+}
+
+nlohmann::json start_json(const handoff::MaterialStart* start) {
+  if (start == nullptr) return "not sent (the FDM lacks material_import): cell state";
+  return {{"mixed_cells", start->mixed_cells},
+          {"fallback_cells", start->fallback_cells},
+          {"cells_without_particles", start->empty_cells}};
 }
 
 }  // namespace
@@ -90,9 +120,10 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
                                  cosim::Hub& hub, const HandoffSettings& settings) {
   const auto start = Clock::now();
   FieldTransferStats exported, imported;
-  const auto names =
+  auto names =
       field_names(region::kFluidParticles,
                   {"position", "velocity", "mass", "internal_energy", "material", "burn_fraction"});
+  if (settings.material_import) names.push_back(std::string(region::kFluidParticles) + "/volume");
   const cosim::Message fields = export_fields(
       hub, "mpm", "mpm_to_fdm", names, settings.max_chunk_bytes, settings.timeout, &exported);
   const handoff::ParticleSet particles = particles_from_wire(fields, region::kFluidParticles);
@@ -117,6 +148,12 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   const handoff::CellBox fluid_box = to_cell_box(layout.fluid_cells);
   const grid::UniformGrid fluid_grid = handoff::sub_grid(grid, fluid_box);
   handoff::FdmStart fdm = handoff::mpm_to_fdm(fluid_grid, particles.view());
+  std::optional<handoff::MaterialStart> material;
+  if (settings.material_import)
+    material = embed_start(
+        grid, fluid_box,
+        handoff::material_start(fluid_grid, particles.view(), particles.volume, fdm.cells.view(),
+                                static_cast<int>(scene.materials.size())));
   handoff::ConservedCells cells;
   cells.assign(grid.cell_count());
   handoff::embed_cells(grid, fluid_box, fdm.cells.view(), cells);
@@ -127,8 +164,8 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
     handoff::append_regular_tracers(grid, fsi_box, ambient.material,
                                     scene.solver.fdm.tracers_per_axis, fdm.tracers);
   }
-  const auto done =
-      import_into_fdm(grid, cells, fdm.tracers, "mpm_to_fdm", hub, settings, imported);
+  const auto done = import_into_fdm(grid, cells, fdm.tracers, material ? &*material : nullptr,
+                                    "mpm_to_fdm", hub, settings, imported);
 
   const Conserved received = particle_conserved(particles.view());
   const Conserved sent = cell_conserved(fdm.cells.view(), fluid_grid.cell_volume());
@@ -155,6 +192,7 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
       {"relative_error",
        {{"sent_vs_received", kernel.summary()}, {"solver_vs_sent", solver.summary()}}},
       {"kinetic_to_internal_J", fdm.kinetic_to_internal},
+      {"material_start", start_json(material ? &*material : nullptr)},
       {"export", transfer_json(exported)},
       {"import", transfer_json(imported)},
       {"wall_s", seconds_since(start)}};
@@ -193,7 +231,7 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const handoff::TracerPoints tracers = remap::radial_tracers(
       grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
   const auto done =
-      import_into_fdm(grid, cells, tracers, "spherical_to_fdm", hub, settings, imported);
+      import_into_fdm(grid, cells, tracers, nullptr, "spherical_to_fdm", hub, settings, imported);
 
   // The remap conserves mass, energy and the radial impulse of the part of the
   // profile inside the grid (its vector momentum cancels by symmetry).

@@ -168,13 +168,16 @@ void add_outflow_quantities(v1::Region& region) {
 
 }  // namespace
 
-AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start,
-                                 AuditOutflow outflow) {
+AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start, AuditOutflow outflow,
+                                 bool material_import) {
   namespace r = afdmp_region;
   using Kind = v1::RegionKind;
   AfdmpRegions out;
   out.fdm.push_back(make_region(r::kAllCells, Kind::REGION_KIND_CELLS, layout.all_cells,
                                 {"rho", "momentum", "E"}));
+  if (material_import)  // each material's own start in the mixed cells, mpm_to_fdm
+    for (const char* q : {"volume_fraction", "material_density", "material_energy"})
+      out.fdm.back().add_quantities(q);
   out.fdm.push_back(make_region(r::kAllTracers, Kind::REGION_KIND_TRACERS, layout.all_cells,
                                 {"position", "material"}));
   if (layout.fsi_cells) {

@@ -82,8 +82,11 @@ struct AuditOutflow {
   bool fdm = true;
   bool mpm = true;
 };
+/// `material_import`: the FDM offers it (proto/README.md §15 rule 8), so
+/// all_cells also declares volume_fraction, material_density, material_energy.
 [[nodiscard]] AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start,
-                                               AuditOutflow outflow = {});
+                                               AuditOutflow outflow = {},
+                                               bool material_import = false);
 
 /// A wire box as the handoff kernels' cell box (same cells, same axes).
 [[nodiscard]] handoff::CellBox to_cell_box(const WireBox& box);

@@ -97,7 +97,8 @@ double proposed_dt(const cosim::Message& reply, const std::string& peer) {
 class AfdmpLoop {
  public:
   AfdmpLoop(const config::Scene& scene, const AfdmpLayout& layout, AuditOutflow outflow,
-            cosim::Hub& hub, io::RunSummary& summary, const CoupledRunOptions& options)
+            bool material_import, cosim::Hub& hub, io::RunSummary& summary,
+            const CoupledRunOptions& options)
       : scene_(scene),
         layout_(layout),
         outflow_(outflow),
@@ -112,7 +113,9 @@ class AfdmpLoop {
         hub_(hub),
         summary_(summary),
         options_(options),
-        settings_{.max_chunk_bytes = options.max_chunk_bytes, .timeout = options.handoff_timeout},
+        settings_{.max_chunk_bytes = options.max_chunk_bytes,
+                  .timeout = options.handoff_timeout,
+                  .material_import = material_import},
         grid_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
                                              scene.domain.cells)) {
     for (const auto& peer : kPeers) contact_[peer] = Clock::now();
@@ -202,7 +205,9 @@ class AfdmpLoop {
                                   {"handoffs", handoffs_},
                                   {"audit", audit_.summary()},
                                   {"outputs", outputs_}});
-    summary_.set_detail("protocol", {{"fdm_outflow", outflow_.fdm}, {"mpm_outflow", outflow_.mpm}});
+    summary_.set_detail("protocol", {{"fdm_outflow", outflow_.fdm},
+                                     {"mpm_outflow", outflow_.mpm},
+                                     {"fdm_material_import", settings_.material_import}});
     summary_.write(options_.out_dir / "summary.json");
   }
 
@@ -547,12 +552,15 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
     const bool mpm_needed = start == AfdmpStart::mpm || layout.fsi_cells.has_value();
     check_capabilities(hellos, mpm_needed, layout.fsi_cells.has_value());
     const AuditOutflow outflow = audit_outflow(hellos, mpm_needed);
+    // v1.2 additive (proto/README.md §15 rule 8): without it, today's cell-state start.
+    const bool material_import = start == AfdmpStart::mpm && offers(hellos[0], "material_import");
     auto messages =
-        setups(scene, scene_text, afdmp_setup_regions(layout, start, outflow), options.out_dir);
+        setups(scene, scene_text, afdmp_setup_regions(layout, start, outflow, material_import),
+               options.out_dir);
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kPeers);
-    AfdmpLoop loop(scene, layout, outflow, hub, summary, options);
+    AfdmpLoop loop(scene, layout, outflow, material_import, hub, summary, options);
     try {
       const CoupledRunReport report = loop.run();
       retired = loop.retired();

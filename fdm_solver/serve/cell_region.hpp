@@ -21,7 +21,7 @@ struct CellRegion {
   ActiveBox box;  ///< FACES: the cells above the faces (one layer along face_axis)
   std::vector<Quantity> quantities;
   std::vector<FluxQuantity> fluxes;               ///< v1.1 amounts (flux_quantities.hpp)
-  std::vector<MaterialQuantity> material_fields;  ///< v1.2, export only
+  std::vector<MaterialQuantity> material_fields;  ///< v1.2 (import: §15 rule 8)
   int face_axis = -1;  ///< REGION_KIND_FACES: the faces' normal; CELLS: -1
 
   [[nodiscard]] std::size_t cell_count() const { return static_cast<std::size_t>(box.cells()); }

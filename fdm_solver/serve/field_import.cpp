@@ -1,6 +1,7 @@
 #include "fdm_solver/serve/field_import.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -8,9 +9,16 @@
 
 #include "cosim/arrays.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "fdm_solver/serve/material_quantities.hpp"
 
 namespace mpfd::fdm {
 namespace {
+
+/// The owner of a MaterialStartView.
+struct ImportedMaterialStart {
+  std::vector<double> volume_fraction, density, energy;
+  [[nodiscard]] MaterialStartView view() const { return {volume_fraction, density, energy}; }
+};
 
 [[noreturn]] void malformed(const std::string& transfer, const std::string& text) {
   throw cosim::ProtocolError(cosim::v1::ERROR_CODE_MALFORMED,
@@ -70,6 +78,59 @@ EulerState imported_cells(const ServedZone& zone, const cosim::Message& fields,
                               " kg/m^3 or a non-finite value; densities must be positive");
   }
   return cells;
+}
+
+/// The per-material start of a CELLS import (volume_fraction, material_density,
+/// material_energy, F64 [n, materials], all three or none) in the tracker's
+/// layout [r * cells + cell]; empty if the import carries none of them.
+ImportedMaterialStart imported_material_start(const ServedZone& zone, const cosim::Message& fields,
+                                              const CellRegion& region,
+                                              const std::string& transfer) {
+  constexpr std::array<MaterialQuantity, 3> kStart{MaterialQuantity::volume_fraction,
+                                                   MaterialQuantity::material_density,
+                                                   MaterialQuantity::material_energy};
+  std::array<const cosim::v1::ArrayDescriptor*, 3> arrays{};
+  for (const auto& a : fields.header.arrays())
+    for (std::size_t q = 0; q < kStart.size(); ++q)
+      if (a.group() == region.name && a.name() == material_quantity_name(kStart[q])) arrays[q] = &a;
+  const auto given = std::count_if(arrays.begin(), arrays.end(), [](auto* a) { return a; });
+  ImportedMaterialStart out;
+  if (given == 0) return out;
+  if (given != 3)
+    malformed(transfer, "region '" + region.name +
+                            "' carries some of volume_fraction, material_density and "
+                            "material_energy; a material start needs all three");
+  const grid::UniformGrid& grid = zone.solver.state().grid;
+  const std::size_t cells = grid.cell_count();
+  const std::size_t materials = zone.solver.materials().size();
+  std::array<std::vector<double>*, 3> targets{&out.volume_fraction, &out.density, &out.energy};
+  for (std::size_t q = 0; q < kStart.size(); ++q) {
+    const cosim::v1::ArrayDescriptor& array = *arrays[q];
+    if (array.dtype() != cosim::v1::DTYPE_F64 ||
+        value_count(array) != region.cell_count() * materials)
+      malformed(transfer, "field '" + field_name(array) + "' must be F64 with " +
+                              std::to_string(region.cell_count()) + " x " +
+                              std::to_string(materials) + " values (cells x materials), got " +
+                              cosim::v1::DType_Name(array.dtype()) + " with " +
+                              std::to_string(value_count(array)));
+    const cosim::ArrayView<double> view(array, fields.frames.at(array.frame_index()));
+    const auto values = view.values();
+    std::vector<double>& target = *targets[q];
+    target.assign(materials * cells, 0.0);
+    for_each_transfer_cell(grid, region.box, [&](std::size_t n, std::size_t cell) {
+      for (std::size_t r = 0; r < materials; ++r) {
+        const double v = values[n * materials + r];
+        if (!std::isfinite(v) || v < 0.0)
+          malformed(transfer, "field '" + field_name(array) + "' has " + std::to_string(v) +
+                                  " for material " + std::to_string(r) + " of cell " +
+                                  std::to_string(cell) +
+                                  " (grid order); values must be finite "
+                                  "and >= 0");
+        target[r * cells + cell] = v;
+      }
+    });
+  }
+  return out;
 }
 
 /// Appends the tracers of a TRACERS region's position and material fields to `out`.
@@ -157,10 +218,13 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
       zone.unknown_region(array.group(), "FieldImportCommit '" + transfer + "'", false);
     const CellRegion& region = zone.region(array.group(), "FieldImportCommit");
     const auto q = find_quantity(array.name());
-    if (!q || !info(*q).writable)
+    const auto m = find_material_quantity(array.name());
+    const bool start = m && *m != MaterialQuantity::cell_material;
+    if ((!q || !info(*q).writable) && !start)
       malformed(transfer, "field '" + field_name(array) +
-                              "' cannot be imported; a CELLS region imports rho, momentum and E");
-    if (!region.declares(*q))
+                              "' cannot be imported; a CELLS region imports rho, momentum and E "
+                              "(and volume_fraction, material_density, material_energy)");
+    if (q ? !region.declares(*q) : !region.declares(*m))
       throw cosim::ProtocolError(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
                                  "FieldImportCommit '" + transfer + "': field '" +
                                      field_name(array) + "' is not declared for region '" +
@@ -181,6 +245,8 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
   if (!std::isfinite(sim_time))
     malformed(transfer, "the commit's envelope sim_time must be finite; it becomes the clock");
   const EulerState cells = imported_cells(zone, fields, *cells_region, transfer);
+  const ImportedMaterialStart start =
+      imported_material_start(zone, fields, *cells_region, transfer);
   std::optional<TracerSet> tracers;
   if (!tracer_regions.empty()) {
     // The tracers outside every imported box stay; those inside are replaced.
@@ -199,7 +265,7 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
       add_imported_tracers(zone, fields, *region, transfer, *tracers);
   }
   try {
-    zone.solver.import_state(cells, std::move(tracers));
+    zone.solver.import_state(cells, std::move(tracers), start.view());
   } catch (const Error& error) {  // import_state changes nothing when it throws
     malformed(transfer, error.what());
   }

@@ -5,7 +5,11 @@
 // EulerSolver::import_state at once: the CELLS region (the whole grid) with
 // rho, momentum and E sets every cell, a TRACERS region's position and
 // material replace the tracers inside its box (T (3-3)-(3-8): MPM particles
-// become the FDM's tracers). The clock becomes the commit's sim_time.
+// become the FDM's tracers). With capability material_import the CELLS region
+// may also carry volume_fraction, material_density and material_energy
+// (F64 [n, materials], all three): each material's own start in the mixed
+// cells (tracker_import.hpp); without them every material starts from its
+// cell's state. The clock becomes the commit's sim_time.
 
 #include "cosim/message.hpp"
 #include "fdm_solver/serve/served_zone.hpp"
@@ -23,7 +27,8 @@ namespace mpfd::fdm {
 /// (MALFORMED or UNKNOWN_REGION, non-fatal) naming the field and the rule, with
 /// the zone untouched, when the transfer is unknown or incomplete, a field's
 /// region is not declared, the CELLS fields do not cover the whole grid with
-/// rho, momentum and E, a value is not finite or a density not positive, a
+/// rho, momentum and E or carry only some of the three per-material start
+/// fields, a value is not finite or a density not positive, a
 /// tracer lies outside its region's box or has a material the scene lacks, or
 /// `tracers` disagrees with the fields. The pending import is consumed.
 [[nodiscard]] cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit);

@@ -1,6 +1,7 @@
 #pragma once
 // The per-material cell quantities an Euler zone exports (proto/README.md
-// §15 rule 6, v1.2; read only): `cell_material` (I32 [n], the material of a
+// §15 rule 6, v1.2; all but cell_material are also imported as a mixed-cell
+// start, rule 8, field_import.hpp): `cell_material` (I32 [n], the material of a
 // single-material cell, -1 for a mixed one), and, F64 [n, materials] with the
 // scene's materials last, `volume_fraction` theta_r, `material_density` rho_r
 // [kg/m^3] and `material_energy` e_r [J/kg]. A single-material cell has theta

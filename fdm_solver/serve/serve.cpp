@@ -29,8 +29,8 @@ cosim::v1::Hello hello(bool v1_0_only, bool boundary_outflow) {
   for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint"})
     hello.add_capabilities(capability);
   if (!v1_0_only)  // v1.1 (proto/README.md §14) and v1.2 (§15)
-    for (const char* capability :
-         {"face_crossing", "boundary_outflow", "field_chunks", "tracer_regions", "material_fields"})
+    for (const char* capability : {"face_crossing", "boundary_outflow", "field_chunks",
+                                   "tracer_regions", "material_fields", "material_import"})
       if (boundary_outflow || std::string_view(capability) != "boundary_outflow")
         hello.add_capabilities(capability);
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));

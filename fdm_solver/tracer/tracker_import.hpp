@@ -8,6 +8,12 @@
 // carried volumes (T (3-21), (3-22)), and start every material of a cell from
 // the cell's own state, e_r = e_c and rho_r = rho_c (T is silent on the first
 // closure after a handoff; the closure then splits rho_c among the materials).
+// With a MaterialStartView (each material's own state, which the coupler
+// takes from the MPM particles, coupler/handoff/material_start.hpp) a mixed
+// cell whose start holds exactly its two materials, each with theta_r > 0 and
+// finite rho_r > 0, e_r > 0, takes theta_r (normalised over the pair; the
+// tracers' carried volumes follow, T (3-22)), rho_r and e_r from it; any other
+// mixed cell, and every single-material cell, starts from the cell's state.
 
 #include <span>
 
@@ -16,17 +22,29 @@
 
 namespace mpfd::fdm {
 
+/// Each material's own start in the cells, laid out [r * cells + cell] as
+/// MaterialStates (grid order). All empty: none.
+struct MaterialStartView {
+  std::span<const double> volume_fraction;  ///< theta_r [-]
+  std::span<const double> density;          ///< rho_r [kg/m^3]
+  std::span<const double> energy;           ///< e_r [J/kg]
+
+  [[nodiscard]] bool empty() const { return volume_fraction.empty(); }
+};
+
 /// The tracker state of `points` (positions and materials; their volumes are
 /// ignored) on `grid` with `material_count` materials, cell density `density`
 /// [kg/m^3] and specific internal energy `energy` [J/kg] (grid order).
 /// `fallback_material` (one per cell) classifies the cells only when no tracer
-/// at all lies in the grid. Throws mpfd::Error naming the first tracer outside
+/// at all lies in the grid. `start`, if not empty, is each material's own
+/// state (see above). Throws mpfd::Error naming the first tracer outside
 /// the grid or with a material outside [0, material_count), a cell holding
 /// three materials, or a size mismatch.
 [[nodiscard]] TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_count,
                                                TracerSet points,
                                                std::span<const int> fallback_material,
                                                std::span<const double> density,
-                                               std::span<const double> energy);
+                                               std::span<const double> energy,
+                                               const MaterialStartView& start = {});
 
 }  // namespace mpfd::fdm

@@ -248,7 +248,10 @@ TEST(AfdmpRun, The_chunk_size_of_a_handoff_does_not_change_the_result) {
   const auto chunked = run(scene, "chunked", 4096);
   const auto& a = whole["details"]["afdmp"]["handoffs"][0];
   const auto& b = chunked["details"]["afdmp"]["handoffs"][0];
-  EXPECT_EQ(a["export"]["chunks"], 6);  // one per field
+  EXPECT_EQ(a["export"]["chunks"], 7);  // one per field, volume for the material start
+  EXPECT_TRUE(whole["details"]["protocol"]["fdm_material_import"].get<bool>());
+  EXPECT_GT(a["material_start"]["mixed_cells"].get<int>(), 0);
+  EXPECT_EQ(a["material_start"], b["material_start"]);
   EXPECT_GT(b["import"]["chunks"].get<int>(), 30);
   EXPECT_EQ(a["solver_totals"], b["solver_totals"]);
   EXPECT_EQ(read_text(scene.parent_path() / "whole" / "gauges.csv"),

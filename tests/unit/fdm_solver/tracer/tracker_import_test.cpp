@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,151 @@ TEST(TrackerImport, RefusesATracerOutsideTheGridNamingIt) {
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("tracer 7"), std::string::npos) << error.what();
   }
+}
+
+/// A 1D row of 3 cells of 1 cm imported with each material's own state:
+/// products (0) in cell 0, air (1) in cell 2, and cell 1 mixed with two
+/// tracers of each (theta 1/2 by counts) but theta_products = 0.6 in the start.
+struct MixedStart {
+  static constexpr std::size_t kMixed = 1;
+  grid::UniformGrid g{{0, 0, 0}, {0.01, 0.01, 0.01}, {3, 1, 1}};
+  TracerSet points;
+  std::vector<int> fallback{1, 1, 1};
+  std::vector<double> rho, e;             // cells
+  std::vector<double> theta, rho_r, e_r;  // [r * 3 + c]
+  double theta_p = 0.6;
+  double rho_p, e_p, rho_a, e_a;
+
+  MixedStart(double rho_products, double e_products, double rho_air, double e_air)
+      : rho_p(rho_products), e_p(e_products), rho_a(rho_air), e_a(e_air) {
+    for (const double x : {0.0025, 0.0075, 0.011, 0.013}) points.add({x, 0.005, 0.005}, 0, 0.0);
+    for (const double x : {0.017, 0.019, 0.025, 0.0275}) points.add({x, 0.005, 0.005}, 1, 0.0);
+    const double rho_mixed = theta_p * rho_p + (1 - theta_p) * rho_a;  // T (3-28)
+    const double e_mixed = (theta_p * rho_p * e_p + (1 - theta_p) * rho_a * e_a) / rho_mixed;
+    rho = {rho_p, rho_mixed, rho_a};
+    e = {e_p, e_mixed, e_a};
+    theta = {1, theta_p, 0, 0, 1 - theta_p, 1};
+    rho_r = {rho_p, rho_p, 0, 0, rho_a, rho_a};
+    e_r = {e_p, e_p, 0, 0, e_a, e_a};
+  }
+  [[nodiscard]] MaterialStartView start() const { return {theta, rho_r, e_r}; }
+  [[nodiscard]] TrackerState state(const MaterialStartView& view) const {
+    return tracker_from_points(g, 2, points, fallback, rho, e, view);
+  }
+  /// The cell pressures after the first closure.
+  std::vector<double> pressure(MultiMaterialTracker& tracker) const {
+    std::vector<double> p(3);
+    tracker.update_pressure(rho, e, p);
+    return p;
+  }
+  [[nodiscard]] MultiMaterialTracker tracker(const MaterialStartView& view) const {
+    return {g, {tm::kTnt, tm::kAir}, state(view)};
+  }
+};
+
+TEST(TrackerImport, MaterialStart_HotDenseProductsAndColdAirStartTheClosureFromTheirOwnStates) {
+  // Products 1000 kg/m^3 at 4 MJ/kg (2.2 GPa), air 1.2 kg/m^3 at 0.2 MJ/kg (0.1 MPa).
+  const MixedStart m(1000.0, 4.0e6, 1.2, 2.0e5);
+  const std::size_t c = MixedStart::kMixed;
+  const TrackerState state = m.state(m.start());
+  EXPECT_EQ(state.materials.volume_fraction(c, 0), 0.6);  // the start's, not 1/2 by counts
+  EXPECT_EQ(state.materials.volume_fraction(c, 1), 1.0 - 0.6);
+  EXPECT_EQ(state.states.energy[state.states.at(0, c)], m.e_p);
+  EXPECT_EQ(state.states.energy[state.states.at(1, c)], m.e_a);
+  EXPECT_EQ(state.states.density[state.states.at(0, c)], m.rho_p);
+  EXPECT_EQ(state.states.density[state.states.at(1, c)], m.rho_a);
+  // Carried volumes follow theta, T (3-22): theta_r V_c / n_br.
+  EXPECT_DOUBLE_EQ(state.tracers.volume[2], 0.6 * m.g.cell_volume() / 2);
+  EXPECT_DOUBLE_EQ(state.tracers.volume[4], 0.4 * m.g.cell_volume() / 2);
+
+  MultiMaterialTracker tracker = m.tracker(m.start());
+  const std::vector<double> p = m.pressure(tracker);
+  const MaterialStates& s = tracker.states();
+  ASSERT_EQ(s.status[c], ClosureStatus::converged);
+  const double rho1 = s.density[s.at(0, c)], rho2 = s.density[s.at(1, c)];
+  const double e1 = s.energy[s.at(0, c)], e2 = s.energy[s.at(1, c)];
+  const double p1 = eos::pressure(eos::AnyEos{tm::kTnt}, rho1, e1);
+  const double p2 = eos::pressure(eos::AnyEos{tm::kAir}, rho2, e2);
+  EXPECT_NEAR(p1, p2, 1e-10 * std::abs(p1));  // T (3-24)
+  EXPECT_NEAR(p[c], p1, 1e-10 * std::abs(p1));
+  EXPECT_NEAR(0.6 * rho1 + 0.4 * rho2, m.rho[c], 1e-13 * m.rho[c]);  // T (3-28)
+  EXPECT_NEAR(e1 / e2, m.e_p / m.e_a, 1e-12 * m.e_p / m.e_a);        // the start's ratio kept
+  EXPECT_NEAR((0.6 * rho1 * e1 + 0.4 * rho2 * e2) / m.rho[c], m.e[c], 1e-12 * m.e[c]);
+
+  // The old rule starts both from e_c: no temperature contrast, another pressure.
+  MultiMaterialTracker old = m.tracker({});
+  const std::vector<double> p_old = m.pressure(old);
+  EXPECT_EQ(old.states().energy[s.at(0, c)], old.states().energy[s.at(1, c)]);
+  EXPECT_EQ(old.materials().volume_fraction(c, 0), 0.5);
+  EXPECT_GT(std::abs(p_old[c] - p[c]), 0.05 * p[c]);
+  RecordProperty("pressure_new_rule_Pa", std::to_string(p[c]));
+  RecordProperty("pressure_old_rule_Pa", std::to_string(p_old[c]));
+  // Single-material cells are the same either way.
+  EXPECT_EQ(p[0], p_old[0]);
+  EXPECT_EQ(p[2], p_old[2]);
+}
+
+TEST(TrackerImport, MaterialStart_InPressureEquilibriumIsWhatTheClosureGivesBack) {
+  // Hot light products (20 kg/m^3, 3 MJ/kg) and cold air at the products'
+  // pressure: the closure's root is the start itself.
+  const eos::AnyEos tnt{tm::kTnt};
+  const double p_products = eos::pressure(tnt, 20.0, 3.0e6);
+  const double e_air = 2.0e5;
+  const double rho_air = p_products / ((tm::kAir.gamma - 1.0) * e_air);
+  const MixedStart m(20.0, 3.0e6, rho_air, e_air);
+  const std::size_t c = MixedStart::kMixed;
+  MultiMaterialTracker tracker = m.tracker(m.start());
+  const std::vector<double> p = m.pressure(tracker);
+  const MaterialStates& s = tracker.states();
+  EXPECT_NEAR(p[c], p_products, 1e-9 * p_products);
+  EXPECT_NEAR(s.density[s.at(0, c)], 20.0, 1e-9 * 20.0);
+  EXPECT_NEAR(s.density[s.at(1, c)], rho_air, 1e-9 * rho_air);
+  EXPECT_NEAR(s.energy[s.at(0, c)], 3.0e6, 1e-9 * 3.0e6);
+  EXPECT_NEAR(s.energy[s.at(1, c)], e_air, 1e-9 * e_air);
+  MultiMaterialTracker old = m.tracker({});
+  const std::vector<double> p_old = m.pressure(old);
+  RecordProperty("pressure_old_rule_over_equilibrium", std::to_string(p_old[c] / p_products));
+  EXPECT_GT(std::abs(p_old[c] - p_products), 0.02 * p_products);  // 2.9 % measured
+}
+
+TEST(TrackerImport, MaterialStart_FallsBackToTheCellStateWhereItDoesNotFitTheCell) {
+  const MixedStart m(1000.0, 4.0e6, 1.2, 2.0e5);
+  const std::size_t c = MixedStart::kMixed;
+  const auto expect_cell_state = [&](const TrackerState& state, const char* why) {
+    EXPECT_EQ(state.materials.volume_fraction(c, 0), 0.5) << why;  // by tracer counts
+    for (const int r : {0, 1}) {
+      EXPECT_EQ(state.states.energy[state.states.at(r, c)], m.e[c]) << why;
+      EXPECT_EQ(state.states.density[state.states.at(r, c)], m.rho[c]) << why;
+    }
+  };
+  {  // the coupler's fallback: no state for the cell
+    std::vector<double> theta = m.theta, rho_r = m.rho_r, e_r = m.e_r;
+    for (const std::size_t i : {c, 3 + c}) theta[i] = rho_r[i] = e_r[i] = 0.0;
+    expect_cell_state(m.state({theta, rho_r, e_r}), "no state");
+  }
+  {  // a material the tracers put in the cell that the start lacks
+    std::vector<double> theta = m.theta;
+    theta[3 + c] = 0.0;
+    expect_cell_state(m.state({theta, m.rho_r, m.e_r}), "one material");
+  }
+  {  // a non-positive energy
+    std::vector<double> e_r = m.e_r;
+    e_r[3 + c] = 0.0;
+    expect_cell_state(m.state({m.theta, m.rho_r, e_r}), "e_r = 0");
+  }
+  {  // a non-finite density
+    std::vector<double> rho_r = m.rho_r;
+    rho_r[c] = std::nan("");
+    expect_cell_state(m.state({m.theta, rho_r, m.e_r}), "rho_r NaN");
+  }
+  // Single-material cells always start from their cell's state.
+  std::vector<double> rho_r = m.rho_r;
+  rho_r[0] = 5.0;
+  const TrackerState state = m.state({m.theta, rho_r, m.e_r});
+  EXPECT_EQ(state.states.density[state.states.at(0, 0)], m.rho[0]);
+  // A start of the wrong size is refused.
+  const std::vector<double> short_theta(5, 0.0);
+  EXPECT_THROW((void)m.state({short_theta, m.rho_r, m.e_r}), Error);
 }
 
 }  // namespace

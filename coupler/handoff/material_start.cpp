@@ -1,0 +1,133 @@
+#include "coupler/handoff/material_start.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "common/core/error.hpp"
+#include "common/core/parallel_for.hpp"
+#include "common/core/require.hpp"
+
+namespace mpfd::coupler::handoff {
+namespace {
+
+/// Sums of the particles of one cell, per material: m_r, V_r, E_r.
+struct MaterialSums {
+  std::vector<double> mass, volume, energy;  // [c * materials + r]
+  std::vector<int> particles;                // per cell and material, how many
+};
+
+MaterialSums sum_per_material(const grid::UniformGrid& grid, const ParticleView& particles,
+                              std::span<const double> volume, int materials) {
+  const std::size_t rows = grid.cell_count() * static_cast<std::size_t>(materials);
+  MaterialSums sums{std::vector<double>(rows, 0.0), std::vector<double>(rows, 0.0),
+                    std::vector<double>(rows, 0.0), std::vector<int>(rows, 0)};
+  // Serial: a one-off handoff, and the sums stay deterministic.
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const grid::Vec3 x{particles.position[0][p], particles.position[1][p],
+                       particles.position[2][p]};
+    const auto where = grid.locate(x);
+    if (!where)
+      throw Error("material start: particle " + std::to_string(p) + " at (" + shortest_text(x[0]) +
+                  ", " + shortest_text(x[1]) + ", " + shortest_text(x[2]) +
+                  ") m must lie inside the grid");
+    const int r = particles.material[p];
+    if (r < 0 || r >= materials)
+      throw Error("material start: particle " + std::to_string(p) + " has material " +
+                  std::to_string(r) + ", outside [0, " + std::to_string(materials) + ")");
+    const std::size_t row = grid.cell_index(where->cell) * static_cast<std::size_t>(materials) +
+                            static_cast<std::size_t>(r);
+    sums.mass[row] += particles.mass[p];
+    sums.volume[row] += volume[p];
+    sums.energy[row] += particles.internal_energy[p];  // extensive, T (3-5)
+    ++sums.particles[row];
+  }
+  return sums;
+}
+
+void require_size(std::size_t got, std::size_t want, const char* name) {
+  if (got != want)
+    throw Error(std::string("material start: ") + name + " must have " + std::to_string(want) +
+                " entries, got " + std::to_string(got));
+}
+
+enum class CellKind { empty, single, mixed, mixed_fallback };
+
+}  // namespace
+
+MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& particles,
+                             std::span<const double> volume, const ConservedView& cells,
+                             int material_count) {
+  check_sizes(particles);
+  check_sizes(cells, grid.cell_count());
+  require_size(volume.size(), particles.size(), "particle volume");
+  if (material_count < 1)
+    throw Error("material start: material_count must be >= 1, got " +
+                std::to_string(material_count));
+  const auto materials = static_cast<std::size_t>(material_count);
+  const MaterialSums sums = sum_per_material(grid, particles, volume, material_count);
+  const std::size_t n = grid.cell_count();
+  const double cell_volume = grid.cell_volume();
+  MaterialStart out;
+  out.material_count = material_count;
+  out.volume_fraction.assign(n * materials, 0.0);
+  out.density.assign(n * materials, 0.0);
+  out.energy.assign(n * materials, 0.0);
+  std::vector<CellKind> kind(n, CellKind::empty);
+  parallel_for(n, [&](std::size_t c) {
+    const std::size_t row = c * materials;
+    double m_sum = 0.0, v_sum = 0.0, e_sum = 0.0;
+    int present = 0;
+    bool usable = true;
+    for (std::size_t r = 0; r < materials; ++r) {
+      if (sums.particles[row + r] == 0) continue;
+      ++present;
+      m_sum += sums.mass[row + r];
+      v_sum += sums.volume[row + r];
+      e_sum += sums.energy[row + r];
+      usable = usable && sums.mass[row + r] > 0.0 && sums.volume[row + r] > 0.0 &&
+               sums.energy[row + r] > 0.0 && std::isfinite(sums.mass[row + r]) &&
+               std::isfinite(sums.volume[row + r]) && std::isfinite(sums.energy[row + r]);
+    }
+    if (present == 0) return;
+    const double rho_c = cells.density[c];
+    const double m_c = rho_c * cell_volume;
+    const double mx = cells.momentum[0][c], my = cells.momentum[1][c], mz = cells.momentum[2][c];
+    // e_c as the FDM reads it from rho, rho v, E (fdm_solver/euler_state.hpp).
+    const double e_c =
+        rho_c > 0.0 ? (cells.total_energy[c] - 0.5 * (mx * mx + my * my + mz * mz) / rho_c) / rho_c
+                    : 0.0;
+    if (present == 1) {
+      for (std::size_t r = 0; r < materials; ++r)
+        if (sums.particles[row + r] > 0) {
+          out.volume_fraction[row + r] = 1.0;
+          out.density[row + r] = rho_c;
+          out.energy[row + r] = e_c;
+        }
+      kind[c] = CellKind::single;
+      return;
+    }
+    const double u_c = m_c * e_c;  // U_c = E_c V_c - |p_c|^2 / (2 m_c)
+    if (!(usable && m_c > 0.0 && u_c > 0.0 && std::isfinite(u_c))) {
+      kind[c] = CellKind::mixed_fallback;
+      return;
+    }
+    const double k = u_c * m_sum / (m_c * e_sum);  // sum_r m_r' e_r = U_c
+    for (std::size_t r = 0; r < materials; ++r) {
+      if (sums.particles[row + r] == 0) continue;
+      const double theta = sums.volume[row + r] / v_sum;     // T (3-23)
+      const double mass = sums.mass[row + r] / m_sum * m_c;  // scaled to m_c, T (3-3)
+      out.volume_fraction[row + r] = theta;
+      out.density[row + r] = mass / (theta * cell_volume);  // T (3-28) holds
+      out.energy[row + r] = k * sums.energy[row + r] / sums.mass[row + r];
+    }
+    kind[c] = CellKind::mixed;
+  });
+  for (const CellKind k : kind) {
+    out.mixed_cells += k == CellKind::mixed || k == CellKind::mixed_fallback ? 1 : 0;
+    out.fallback_cells += k == CellKind::mixed_fallback ? 1 : 0;
+    out.empty_cells += k == CellKind::empty ? 1 : 0;
+  }
+  return out;
+}
+
+}  // namespace mpfd::coupler::handoff
