@@ -113,8 +113,8 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
     }
   }
   reserve_particle_scratch();
-  compute_stable_dt(first);  // the others have not changed since the last full pass
-  add_to_next_step_map(first);
+  add_to_next_step_map(first);  // before a throw below could leave the map without them
+  compute_stable_dt(first);     // the others have not changed since the last full pass
 }
 
 ParticleBatch MpmSolver::remove_particles(std::span<const std::uint8_t> flags) {

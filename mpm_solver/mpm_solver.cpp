@@ -398,10 +398,10 @@ void MpmSolver::particles_to_grid(Scatter what) {
   // Per-node sums only some scenes need, zeroed here (grow-only: no allocation).
   if (has_fixed_) fixed_mass_.assign(grid_.node_count(), 0.0);
   if (what == Scatter::all) zero_stress_sums();
-  scatter_particles(what, 0);
+  scatter_particles(what, ScatterOrder::by_colour);
 }
 
-void MpmSolver::scatter_particles(Scatter what, std::size_t from) {
+void MpmSolver::scatter_particles(Scatter what, ScatterOrder order, std::size_t first) {
   const auto& ps = particles_;
   double* node_mass = grid_.mass.data();
   double* node_momentum[3] = {grid_.momentum[0].data(), grid_.momentum[1].data(),
@@ -410,10 +410,10 @@ void MpmSolver::scatter_particles(Scatter what, std::size_t from) {
   auto& cf = contact_fields_;
   double* box_energy = next_map_.valid ? next_map_energy_.data() : nullptr;
   const auto for_each = [&](const auto& fn) {
-    if (from == 0)
+    if (order == ScatterOrder::by_colour)
       for_each_particle_by_colour(grid_, ps.size(), fn);
     else
-      for (std::size_t p = from; p < ps.size(); ++p) fn(p);
+      for (std::size_t p = first; p < ps.size(); ++p) fn(p);
   };
   const auto scatter = [&](auto with_stress) {
     constexpr bool kStress = decltype(with_stress)::value;

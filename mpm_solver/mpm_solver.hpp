@@ -22,6 +22,9 @@
 //                             constitutive model (2-21) with the program burn (3-1), (3-2)
 //   7. remove_outflow()       particles that left through an outflow or non-reflecting face
 //
+// A coupler's ghost-node export may run steps 1 and 2 early, at the end of the
+// previous step (map_next_step); the advance then starts from step 3.
+//
 // In a coupled run (mpm_solver serve) a coupler's nodal contributions
 // (queue_node_load, T (4-7)...(4-9), T §4.3 steps 3 and 5) act between steps 2
 // and 3: after (2-9)-(2-12) have mapped the particles, before (2-13). Without
@@ -122,7 +125,8 @@ struct NodeState {
   std::array<double, 3> momentum{};  ///< p_I (2-9) [kg m/s]
 };
 
-/// Node mass and momentum of a box of grid nodes (MpmSolver::map_particles_to_node_box).
+/// Node mass and momentum of a box of grid nodes (MpmSolver::map_particles_to_node_box,
+/// MpmSolver::read_next_step_box).
 /// Kept by the caller between calls: after the first, filling it allocates nothing.
 struct NodeBoxMap {
   std::vector<double> mass;      ///< m_I (2-12) per node [kg]
@@ -198,14 +202,17 @@ class MpmSolver {
   /// ghost nodes from it (read_next_step_box): the step's own scatter, not a
   /// second one. Particles injected before the advance are added to the map
   /// after the others, so its sums differ from a fresh map in the last bits;
-  /// a removal, a restore, or a load on a node of a block no particle reaches
-  /// makes the advance map afresh.
+  /// a removal, a restore, map_particles_to_nodes, an injection that reaches a
+  /// block the map lacks, or a load on a node of such a block makes the
+  /// advance map afresh.
   void map_next_step(const grid::Index3& lo, const grid::Index3& hi);
   /// Whether the next advance starts from a map of map_next_step's.
   [[nodiscard]] bool has_next_step_map() const { return next_map_.valid; }
-  /// The grid-node box [lo, hi) of that map, if there is one: a checkpoint keeps
-  /// it, so that a restored run maps again and adds later injections in the same order.
-  [[nodiscard]] std::optional<std::array<grid::Index3, 2>> next_step_map_box() const;
+  /// For a checkpoint: the grid-node box [lo, hi) of that map, which a restored
+  /// run maps again (and then adds later injections in the same order). A map
+  /// that already holds injected particles cannot be remade so: it is dropped
+  /// (this run then maps afresh too) and nothing is returned.
+  [[nodiscard]] std::optional<std::array<grid::Index3, 2>> next_step_map_for_checkpoint();
   /// Whether the next advance starts from map_next_step's map of the box [lo, hi).
   [[nodiscard]] bool next_step_mapped(const grid::Index3& lo, const grid::Index3& hi) const;
   /// The box's node mass, momentum and e_I from map_next_step's map, as
@@ -242,10 +249,11 @@ class MpmSolver {
   }
   /// Zeroes the per-node sums of the scenes that need them and scatters every particle.
   void particles_to_grid(Scatter what = Scatter::all);
-  /// The scatter of particles_to_grid: every particle, block by block in colour
-  /// order (from = 0), or the particles from `from` on in index order (those
-  /// appended to a map). With next_map_.valid it also sums e_I over its box.
-  void scatter_particles(Scatter what, std::size_t from);
+  /// Which particles scatter_particles takes: all, block by block in colour
+  /// order, or those appended to a map (from its `first` on, in index order).
+  enum class ScatterOrder { by_colour, appended };
+  /// The scatter of particles_to_grid. With next_map_.valid it also sums e_I over its box.
+  void scatter_particles(Scatter what, ScatterOrder order, std::size_t first = 0);
   /// Adds the particles from `first` on to map_next_step's map, or drops the
   /// map when one reaches a block it lacks.
   void add_to_next_step_map(std::size_t first);
@@ -346,6 +354,7 @@ class MpmSolver {
   struct NextStepMap {
     bool valid = false;
     grid::Index3 lo{}, hi{};
+    std::size_t appended = 0;  ///< particles injected onto it
   };
   NextStepMap next_map_;
   std::vector<double> next_map_energy_;  // per node: e_I over next_map_'s box [J]

@@ -5,12 +5,19 @@
 // the same particles. Mapping the whole grid then, and letting the advance
 // start from that map, makes the export a copy instead of a second scatter.
 #include <algorithm>
+#include <string>
 
+#include "common/core/error.hpp"
 #include "mpm_solver/mpm_solver.hpp"
 
 namespace mpfd::mpm {
 
 void MpmSolver::map_next_step(const grid::Index3& lo, const grid::Index3& hi) {
+  for (int a = 0; a < 3; ++a)
+    if (!(lo[a] < hi[a]))
+      throw Error("mpm: map_next_step needs a box with lo < hi on every axis, got axis " +
+                  std::to_string(a) + ": [" + std::to_string(lo[a]) + ", " + std::to_string(hi[a]) +
+                  ")");
   rebuild_grid();
   if (contact_) mark_shared_nodes();
   for (int a = 0; a < 3; ++a) {
@@ -19,6 +26,7 @@ void MpmSolver::map_next_step(const grid::Index3& lo, const grid::Index3& hi) {
   }
   next_map_energy_.assign(grid_.node_count(), 0.0);  // grow-only once warm
   next_map_.valid = true;
+  next_map_.appended = 0;
   particles_to_grid(first_scatter());
 }
 
@@ -31,7 +39,8 @@ bool MpmSolver::next_step_mapped(const grid::Index3& lo, const grid::Index3& hi)
   return true;
 }
 
-std::optional<std::array<grid::Index3, 2>> MpmSolver::next_step_map_box() const {
+std::optional<std::array<grid::Index3, 2>> MpmSolver::next_step_map_for_checkpoint() {
+  if (next_map_.valid && next_map_.appended > 0) next_map_.valid = false;
   if (!next_map_.valid) return std::nullopt;
   std::array<grid::Index3, 2> box{};
   for (int a = 0; a < 3; ++a) {
@@ -71,7 +80,8 @@ void MpmSolver::read_next_step_box(const grid::Index3& lo, const grid::Index3& h
 void MpmSolver::add_to_next_step_map(std::size_t first) {
   if (!next_map_.valid) return;
   const std::size_t n = particles_.size();
-  const bool active[3] = {grid().is_active(0), grid().is_active(1), grid().is_active(2)};
+  const bool active[3] = {grid_.grid().is_active(0), grid_.grid().is_active(1),
+                          grid_.grid().is_active(2)};
   const int width = settings_.shape_function != config::ShapeFunction::linear ? 3 : 2;
   home_slot_.resize(n);
   for (std::size_t p = first; p < n; ++p) {
@@ -91,13 +101,15 @@ void MpmSolver::add_to_next_step_map(std::size_t first) {
         return;
       }
     }
+    // Corner 0 is the home node: its block is the particle's home block.
     home_slot_[p] = static_cast<std::int32_t>(static_cast<std::size_t>(grid_.find_node(lo)) /
                                               grid_.block_nodes());
   }
   // The later passes of the step visit particles through the bins; a bucket
   // keeps index order, so the appended particles come last in theirs.
   grid_.bin_particles(home_slot_);
-  scatter_particles(first_scatter(), first);
+  scatter_particles(first_scatter(), ScatterOrder::appended, first);
+  next_map_.appended += n - first;
 }
 
 bool MpmSolver::loads_on_mapped_blocks() const {

@@ -97,6 +97,9 @@ MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& 
         rho_c > 0.0 ? (cells.total_energy[c] - 0.5 * (mx * mx + my * my + mz * mz) / rho_c) / rho_c
                     : 0.0;
     if (present == 1) {
+      // The FDM does not use these rows, but refuses a negative or non-finite energy
+      // in them: a round-off-negative e_c leaves the row at 0 (no state).
+      if (!(e_c >= 0.0 && std::isfinite(e_c))) return;
       for (std::size_t r = 0; r < materials; ++r)
         if (sums.particles[row + r] > 0) {
           out.volume_fraction[row + r] = 1.0;

@@ -85,8 +85,10 @@ handoff::MaterialStart embed_start(const grid::UniformGrid& grid, const handoff:
 }
 
 nlohmann::json start_json(const handoff::MaterialStart* start) {
-  if (start == nullptr) return "not sent (the FDM lacks material_import): cell state";
-  return {{"mixed_cells", start->mixed_cells},
+  if (start == nullptr)
+    return {{"sent", false}, {"why", "the FDM lacks material_import: the cells' state"}};
+  return {{"sent", true},
+          {"mixed_cells", start->mixed_cells},
           {"fallback_cells", start->fallback_cells},
           {"cells_without_particles", start->empty_cells}};
 }
@@ -127,6 +129,9 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   const cosim::Message fields = export_fields(
       hub, "mpm", "mpm_to_fdm", names, settings.max_chunk_bytes, settings.timeout, &exported);
   const handoff::ParticleSet particles = particles_from_wire(fields, region::kFluidParticles);
+  // Asked for: without it every mixed cell would fall back to the cell's state unnoticed.
+  if (settings.material_import)
+    static_cast<void>(cosim::view_array<double>(fields, region::kFluidParticles, "volume"));
   const auto burn = cosim::view_array<double>(fields, region::kFluidParticles, "burn_fraction");
   const auto explosive = explosive_materials(scene);
   if (!handoff::detonation_complete(burn.values(), particles.material, explosive)) {

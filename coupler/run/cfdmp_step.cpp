@@ -178,8 +178,9 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   }
   // After the removal: the MPM maps the next step for this export (map_next_step),
   // and a removal after it would drop that map. The removed particles go to the FDM
-  // cells (4-19)...(4-21), so the ghost nodes are not to hold them (at w = 5 they lie
-  // 3 or more cells away, beyond any stencil, and the values are the same either way).
+  // cells (4-19)...(4-21), so the ghost nodes are not to hold them. For w >= 2 (any w
+  // with linear shapes) they lie beyond every ghost node's stencil anyway; at w = 1 a
+  // uGIMP particle just past the face would have reached one.
   if (plan.advance || !have_ghost_source_) {
     add_export(mpm, "ghost_nodes", {"mass", "momentum", "internal_energy"});
     mpm_ops_.push_back(Op::export_ghost);

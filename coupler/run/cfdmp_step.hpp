@@ -7,8 +7,8 @@
 //         (export beyond_cells: uGIMP), (export coupling_face: v1.1), (export fdm_owned),
 //         propose_dt]
 //   MPM: [inject "injected", apply interface_nodes ADD, (apply outer_nodes ADD: uGIMP),
-//         advance, export ghost_nodes,
-//         export face_particles, remove "crossed" (left mpm_zone), (export mpm_zone),
+//         advance, export face_particles, remove "crossed" (left mpm_zone),
+//         export ghost_nodes (the MPM maps its next step for it), (export mpm_zone),
 //         propose_dt]
 // A step without advance (step 0, and the one before each output) keeps only the
 // applies of deposits, the exports and the proposals. While the MPM zone is

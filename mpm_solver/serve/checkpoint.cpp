@@ -1,5 +1,6 @@
 #include "mpm_solver/serve/checkpoint.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -66,7 +67,7 @@ void verify_digest(const fs::path& file) {
 
 }  // namespace
 
-cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
+cosim::v1::CheckpointWritten write_checkpoint(ServedZone& zone,
                                               const cosim::v1::Checkpoint& request) {
   if (zone.solver.queued_node_loads() > 0)
     refuse("Checkpoint: " + std::to_string(zone.solver.queued_node_loads()) +
@@ -85,7 +86,8 @@ cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
   try {
     if (file.has_parent_path()) fs::create_directories(file.parent_path());
     try {
-      write_checkpoint_file(partial, zone);  // closed on return: then complete
+      // closed on return: then complete
+      write_checkpoint_file(partial, zone, zone.solver.next_step_map_for_checkpoint());
       written.set_bytes(static_cast<std::uint64_t>(fs::file_size(partial)));
       written.set_sha256(cosim::sha256_hex_of_file(partial));
       write_sidecar(partial_sidecar, written.sha256(), file);
@@ -119,9 +121,14 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     zone.solver.restore(std::move(back.particles), back.injected_body_materials, back.solver_time,
                         back.steps, back.ledger,
                         back.particle_updates);  // checks before it changes anything
-    // The running zone added its later injections to this map: so must this one.
-    if (back.next_step_map_box)
+    // The running zone adds its later injections to its map: so must this one.
+    zone.next_step_map_seconds = 0.0;
+    if (back.next_step_map_box) {
+      const auto start = std::chrono::steady_clock::now();
       zone.solver.map_next_step((*back.next_step_map_box)[0], (*back.next_step_map_box)[1]);
+      zone.next_step_map_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     zone.dormant = false;
   } catch (const cosim::ProtocolError&) {
     throw;

@@ -16,7 +16,7 @@ namespace mpfd::mpm {
 /// Throws a non-fatal cosim::ProtocolError{IO} — no partial file left — when a file
 /// cannot be written, or when ApplyRegion values wait for the next Advance
 /// (they are not part of a checkpoint).
-[[nodiscard]] cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
+[[nodiscard]] cosim::v1::CheckpointWritten write_checkpoint(ServedZone& zone,
                                                             const cosim::v1::Checkpoint& request);
 
 /// Reads a checkpoint (path as for write_checkpoint) into the zone's solver,

@@ -46,7 +46,8 @@ void check_header(const cosim::CheckpointReader& in, const ServedZone& zone) {
 
 }  // namespace
 
-void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone) {
+void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone,
+                           const std::optional<std::array<grid::Index3, 2>>& next_step_map_box) {
   const MpmSolver& solver = zone.solver;
   const ParticleSet& ps = solver.particles();
   const std::size_t n = ps.size();
@@ -93,9 +94,9 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
                                        ledger.momentum[1], ledger.momentum[2],
                                        ledger.energy,      double(ledger.particles_removed)};
   h5.write_dataset("/ledger", audit, {audit.size()}, "kg, kg m/s, kg m/s, kg m/s, J, particles");
-  if (const auto box = solver.next_step_map_box()) {
+  if (next_step_map_box) {
     std::vector<std::int64_t> corners;
-    for (const auto& corner : *box)
+    for (const auto& corner : *next_step_map_box)
       for (const int node : corner) corners.push_back(node);
     h5.write_dataset("/next_step_map_box", corners, {corners.size()});  // grid nodes lo, hi
   }
@@ -151,6 +152,11 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
     const auto corners = in.values("/next_step_map_box", 6, "grid node lo, hi");
     std::array<grid::Index3, 2> box{};
     for (std::size_t c = 0; c < 6; ++c) box[c / 3][c % 3] = static_cast<int>(corners[c]);
+    for (int a = 0; a < 3; ++a)
+      if (!(box[0][a] >= 0 && box[0][a] < box[1][a] &&
+            box[1][a] <= zone.solver.grid().cells()[a] + 1))
+        in.mismatch("has a next-step map box outside the grid's nodes on axis " +
+                    std::to_string(a));
     back.next_step_map_box = box;
   }
   return back;

@@ -19,8 +19,10 @@ namespace mpfd::mpm {
 inline constexpr const char* kCheckpointFormat = "mpfd-mpm-checkpoint";
 inline constexpr std::int64_t kCheckpointVersion = 1;
 
-/// Writes the zone's whole restart state to `file` (created or overwritten).
-void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone);
+/// Writes the zone's whole restart state to `file` (created or overwritten), with
+/// the box of its next-step map if it has one to keep (MpmSolver::next_step_map_for_checkpoint).
+void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone,
+                           const std::optional<std::array<grid::Index3, 2>>& next_step_map_box);
 
 /// A checkpoint read back: what MpmSolver::restore takes.
 struct CheckpointContents {
