@@ -168,13 +168,7 @@ NodeState MpmSolver::node_state(const grid::Index3& node) const {
 
 void MpmSolver::map_particles_to_node_box(const grid::Index3& lo, const grid::Index3& hi,
                                           NodeBoxMap& out) const {
-  const std::size_t nodes = static_cast<std::size_t>(hi[0] - lo[0]) *
-                            static_cast<std::size_t>(hi[1] - lo[1]) *
-                            static_cast<std::size_t>(hi[2] - lo[2]);
-  out.mass.assign(nodes, 0.0);
-  out.momentum.assign(3 * nodes, 0.0);
-  out.internal_energy.assign(nodes, 0.0);
-  out.reaching.clear();
+  out.reset(lo, hi);
   const auto& ps = particles_;
   dispatch_stencil(
       settings_.shape_function != config::ShapeFunction::linear, axis_mask_,

@@ -243,17 +243,9 @@ void MpmSolver::rebuild_grid() {
   const std::size_t n = particles_.size();
   home_slot_.resize(n);
   grid_.clear();
-  const auto& g = grid_.grid();
-  const bool active[3] = {g.is_active(0), g.is_active(1), g.is_active(2)};
-  const int width = settings_.shape_function != config::ShapeFunction::linear ? 3 : 2;
   for (std::size_t p = 0; p < n; ++p) {
     grid::Index3 lo{}, hi{};
-    for (int a = 0; a < 3; ++a) {
-      const double x = particles_.position[a][p];
-      lo[a] = width == 3 ? first_node<3>(x, a, active[a], geometry_)
-                         : first_node<2>(x, a, active[a], geometry_);
-      hi[a] = active[a] ? lo[a] + width - 1 : lo[a];
-    }
+    stencil_box(p, lo, hi);
     home_slot_[p] = grid_.activate(lo, hi);
   }
   for (const NodeLoad& load : node_loads_) {  // a coupler's node may lie beyond every stencil
@@ -263,6 +255,17 @@ void MpmSolver::rebuild_grid() {
   }
   grid_.allocate_nodes();
   grid_.bin_particles(home_slot_);
+}
+
+void MpmSolver::stencil_box(std::size_t p, grid::Index3& lo, grid::Index3& hi) const {
+  const auto& g = grid_.grid();
+  const bool gimp = settings_.shape_function != config::ShapeFunction::linear;
+  for (int a = 0; a < 3; ++a) {
+    const double x = particles_.position[a][p];
+    const bool active = g.is_active(a);
+    lo[a] = gimp ? first_node<3>(x, a, active, geometry_) : first_node<2>(x, a, active, geometry_);
+    hi[a] = active ? lo[a] + (gimp ? 2 : 1) : lo[a];
+  }
 }
 
 void MpmSolver::particle_half_width(std::size_t p, double half_width[3]) const {

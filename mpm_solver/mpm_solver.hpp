@@ -136,6 +136,17 @@ struct NodeBoxMap {
   /// The particles whose stencil reaches the box, in index order.
   std::vector<std::int32_t> reaching;
   std::vector<std::int32_t> by_colour;  ///< scratch: `reaching` in summation order
+
+  /// Sizes the node arrays to the box [lo, hi) and zeroes them; empties `reaching`.
+  void reset(const grid::Index3& lo, const grid::Index3& hi) {
+    const std::size_t nodes = static_cast<std::size_t>(hi[0] - lo[0]) *
+                              static_cast<std::size_t>(hi[1] - lo[1]) *
+                              static_cast<std::size_t>(hi[2] - lo[2]);
+    mass.assign(nodes, 0.0);
+    momentum.assign(3 * nodes, 0.0);
+    internal_energy.assign(nodes, 0.0);
+    reaching.clear();
+  }
 };
 
 class MpmSolver {
@@ -236,6 +247,9 @@ class MpmSolver {
 
  private:
   void rebuild_grid();
+  /// Storage coordinates of the first and last node of particle p's stencil (rebuild_grid's
+  /// blocks).
+  void stencil_box(std::size_t p, grid::Index3& lo, grid::Index3& hi) const;
   /// GIMP half-widths of particle p per axis [grid units]: its body's, times F_aa for cpGIMP.
   void particle_half_width(std::size_t p, double half_width[3]) const;
   void mark_shared_nodes();

@@ -54,13 +54,7 @@ void MpmSolver::read_next_step_box(const grid::Index3& lo, const grid::Index3& h
                                    NodeBoxMap& out) const {
   if (!next_step_mapped(lo, hi))
     throw Error("mpm: read_next_step_box on a box map_next_step did not map (or the map is gone)");
-  const std::size_t nodes = static_cast<std::size_t>(hi[0] - lo[0]) *
-                            static_cast<std::size_t>(hi[1] - lo[1]) *
-                            static_cast<std::size_t>(hi[2] - lo[2]);
-  out.mass.assign(nodes, 0.0);
-  out.momentum.assign(3 * nodes, 0.0);
-  out.internal_energy.assign(nodes, 0.0);
-  out.reaching.clear();
+  out.reset(lo, hi);
   std::size_t n = 0;
   for (int i = lo[0]; i < hi[0]; ++i)
     for (int j = lo[1]; j < hi[1]; ++j)
@@ -80,18 +74,10 @@ void MpmSolver::read_next_step_box(const grid::Index3& lo, const grid::Index3& h
 void MpmSolver::add_to_next_step_map(std::size_t first) {
   if (!next_map_.valid) return;
   const std::size_t n = particles_.size();
-  const bool active[3] = {grid_.grid().is_active(0), grid_.grid().is_active(1),
-                          grid_.grid().is_active(2)};
-  const int width = settings_.shape_function != config::ShapeFunction::linear ? 3 : 2;
   home_slot_.resize(n);
   for (std::size_t p = first; p < n; ++p) {
     grid::Index3 lo{}, hi{};
-    for (int a = 0; a < 3; ++a) {
-      const double x = particles_.position[a][p];
-      lo[a] = width == 3 ? first_node<3>(x, a, active[a], geometry_)
-                         : first_node<2>(x, a, active[a], geometry_);
-      hi[a] = active[a] ? lo[a] + width - 1 : lo[a];
-    }
+    stencil_box(p, lo, hi);
     // A stencil spans at most two blocks per axis: those of its corners.
     for (int corner = 0; corner < 8; ++corner) {
       const grid::Index3 at{(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],

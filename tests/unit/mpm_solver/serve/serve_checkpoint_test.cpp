@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "tests/unit/mpm_solver/serve/serve_harness.hpp"
 
@@ -55,29 +56,37 @@ void run_exporting_ghost_nodes(ServedMpm& served, Clock& clock, int steps) {
   }
 }
 
-/// Injects one particle of the coupler's (id 9000001) in the gas at x = 0.5.
-void inject_one(ServedMpm& served) {
+/// Gas particles of the coupler's, material 0, as InjectParticles arrays.
+struct Injection {
+  std::vector<std::uint64_t> id;
+  std::vector<double> position, velocity, mass, volume, energy;  // [n, 3] for the vectors
+};
+
+void inject(ServedMpm& served, const Injection& in) {
+  const std::size_t n = in.id.size();
+  const std::vector<std::uint32_t> material(n, 0);
   cosim::Message exchange;
   add_op(exchange).mutable_inject()->set_group("injected");
-  const std::vector<std::uint64_t> id = {9000001};
-  const std::vector<double> position = {0.51, 0.2, 0.03};
-  const std::vector<double> velocity = {10.0, 0.0, 0.0};
-  const std::vector<double> mass = {1.0 * 0.0625 * 0.0625 * 0.0625 / 4};
-  const std::vector<double> volume = {0.0625 * 0.0625 * 0.0625 / 4};
-  const std::vector<double> energy = {mass[0] * 2.5e5};  // e = p / ((gamma - 1) rho)
-  const std::vector<std::uint32_t> material = {0};
-  cosim::add_array(exchange, {"injected", "id", {}, "1"}, std::span<const std::uint64_t>(id));
-  cosim::add_array(exchange, {"injected", "position", {1, 3}, "m"},
-                   std::span<const double>(position));
-  cosim::add_array(exchange, {"injected", "velocity", {1, 3}, "m/s"},
-                   std::span<const double>(velocity));
-  cosim::add_array(exchange, {"injected", "mass", {}, "kg"}, std::span<const double>(mass));
-  cosim::add_array(exchange, {"injected", "volume", {}, "m^3"}, std::span<const double>(volume));
+  cosim::add_array(exchange, {"injected", "id", {}, "1"}, std::span<const std::uint64_t>(in.id));
+  cosim::add_array(exchange, {"injected", "position", {n, 3}, "m"},
+                   std::span<const double>(in.position));
+  cosim::add_array(exchange, {"injected", "velocity", {n, 3}, "m/s"},
+                   std::span<const double>(in.velocity));
+  cosim::add_array(exchange, {"injected", "mass", {}, "kg"}, std::span<const double>(in.mass));
+  cosim::add_array(exchange, {"injected", "volume", {}, "m^3"}, std::span<const double>(in.volume));
   cosim::add_array(exchange, {"injected", "internal_energy", {}, "J"},
-                   std::span<const double>(energy));
+                   std::span<const double>(in.energy));
   cosim::add_array(exchange, {"injected", "material", {}, "1"},
                    std::span<const std::uint32_t>(material));
   served.request(std::move(exchange));
+}
+
+/// Injects one particle of the coupler's (id 9000001) in the gas at x = 0.5.
+void inject_one(ServedMpm& served) {
+  const double volume = 0.0625 * 0.0625 * 0.0625 / 4;
+  // e = p / ((gamma - 1) rho)
+  inject(served,
+         {{9000001}, {0.51, 0.2, 0.03}, {10.0, 0.0, 0.0}, {volume}, {volume}, {volume * 2.5e5}});
 }
 
 /// Injects 24 hot particles of the coupler's (ids 9100000...) spread over the
@@ -85,33 +94,20 @@ void inject_one(ServedMpm& served) {
 /// from a fresh map's.
 void inject_spread(ServedMpm& served) {
   constexpr std::size_t n = 24;
-  std::vector<std::uint64_t> id(n);
-  std::vector<double> position(3 * n), velocity(3 * n, 0.0), mass(n), volume(n), energy(n);
-  const std::vector<std::uint32_t> material(n, 0);
+  Injection in{std::vector<std::uint64_t>(n),   std::vector<double>(3 * n),
+               std::vector<double>(3 * n, 0.0), std::vector<double>(n),
+               std::vector<double>(n),          std::vector<double>(n)};
   for (std::size_t i = 0; i < n; ++i) {
-    id[i] = 9100000 + i;
-    position[3 * i] = 0.27 + 0.019 * static_cast<double>(i);
-    position[3 * i + 1] = 0.05 + 0.037 * static_cast<double>(i);
-    position[3 * i + 2] = 0.03;
-    velocity[3 * i] = 20.0 + static_cast<double>(i);
-    volume[i] = 0.0625 * 0.0625 * 0.0625 / 4;
-    mass[i] = 1.3 * volume[i];
-    energy[i] = mass[i] * 3.1e5;
+    in.id[i] = 9100000 + i;
+    in.position[3 * i] = 0.27 + 0.019 * static_cast<double>(i);
+    in.position[3 * i + 1] = 0.05 + 0.037 * static_cast<double>(i);
+    in.position[3 * i + 2] = 0.03;
+    in.velocity[3 * i] = 20.0 + static_cast<double>(i);
+    in.volume[i] = 0.0625 * 0.0625 * 0.0625 / 4;
+    in.mass[i] = 1.3 * in.volume[i];
+    in.energy[i] = in.mass[i] * 3.1e5;
   }
-  cosim::Message exchange;
-  add_op(exchange).mutable_inject()->set_group("injected");
-  cosim::add_array(exchange, {"injected", "id", {}, "1"}, std::span<const std::uint64_t>(id));
-  cosim::add_array(exchange, {"injected", "position", {n, 3}, "m"},
-                   std::span<const double>(position));
-  cosim::add_array(exchange, {"injected", "velocity", {n, 3}, "m/s"},
-                   std::span<const double>(velocity));
-  cosim::add_array(exchange, {"injected", "mass", {}, "kg"}, std::span<const double>(mass));
-  cosim::add_array(exchange, {"injected", "volume", {}, "m^3"}, std::span<const double>(volume));
-  cosim::add_array(exchange, {"injected", "internal_energy", {}, "J"},
-                   std::span<const double>(energy));
-  cosim::add_array(exchange, {"injected", "material", {}, "1"},
-                   std::span<const std::uint32_t>(material));
-  served.request(std::move(exchange));
+  inject(served, in);
 }
 
 cosim::Message export_all(ServedMpm& served) {
@@ -172,74 +168,68 @@ TEST_F(MpmServeCheckpoint, ARestoredZoneContinuesBitForBit) {
   EXPECT_EQ(second.shut_down().steps_done(), 25U);
 }
 
+class MpmServeRestart : public MpmServeCheckpoint {
+ protected:
+  using Phase = std::function<void(ServedMpm&, Clock&)>;
+  /// A zone runs `before` (`steps` advances), checkpoints, runs `after`; a second
+  /// zone restored from the checkpoint runs `after` too: both end with the same
+  /// particles and ghost nodes.
+  void expect_bit_for_bit(std::uint64_t steps, const Phase& before, const Phase& after) {
+    ServedMpm first;
+    Clock clock{0.0, first.request(setup(blast_text(), regions_with_all(), dir_.string()))
+                         .header.setup_ack()
+                         .stable_dt()};
+    before(first, clock);
+    cosim::Message checkpoint;
+    checkpoint.header.mutable_checkpoint();
+    const auto written = first.request(std::move(checkpoint)).header.checkpoint_written();
+    const Clock at_checkpoint = clock;
+    after(first, clock);
+    const auto expected = export_all(first);
+    first.shut_down();
+
+    ServedMpm second;
+    second.request(setup(blast_text(), regions_with_all(), dir_.string()));
+    cosim::Message restore;
+    restore.header.mutable_restore()->set_path(written.path());
+    restore.header.mutable_restore()->set_step(steps);
+    second.request(std::move(restore));
+    Clock again = at_checkpoint;
+    after(second, again);
+    EXPECT_EQ(again.time, clock.time);
+    const auto got = export_all(second);
+    for (const char* name : {"position", "velocity", "internal_energy", "stress"})
+      EXPECT_EQ(array_of(got, "all", name), array_of(expected, "all", name)) << name;
+    EXPECT_EQ(array_of(got, "ghost_nodes", "mass"), array_of(expected, "ghost_nodes", "mass"));
+    EXPECT_EQ(array_of(got, "ghost_nodes", "momentum"),
+              array_of(expected, "ghost_nodes", "momentum"));
+  }
+};
+
 // A checkpoint taken while the next step is mapped (the ghost_nodes export
 // maps it, and particles injected before the advance are added to that map
 // after the others): the restored zone maps it again, so an injection after
 // the restore sums in the same order and the run continues bit for bit.
-TEST_F(MpmServeCheckpoint, ARestoredZoneWhoseNextStepWasMappedContinuesBitForBit) {
-  ServedMpm first;
-  Clock clock{0.0, first.request(setup(blast_text(), regions_with_all(), dir_.string()))
-                       .header.setup_ack()
-                       .stable_dt()};
-  run_exporting_ghost_nodes(first, clock, 6);
-  cosim::Message checkpoint;
-  checkpoint.header.mutable_checkpoint();
-  const auto written = first.request(std::move(checkpoint)).header.checkpoint_written();
-  const Clock at_checkpoint = clock;
-  inject_spread(first);
-  run_exporting_ghost_nodes(first, clock, 6);
-  const auto expected = export_all(first);
-  first.shut_down();
-
-  ServedMpm second;
-  second.request(setup(blast_text(), regions_with_all(), dir_.string()));
-  cosim::Message restore;
-  restore.header.mutable_restore()->set_path(written.path());
-  restore.header.mutable_restore()->set_step(6);
-  second.request(std::move(restore));
-  Clock again = at_checkpoint;
-  inject_spread(second);
-  run_exporting_ghost_nodes(second, again, 6);
-  EXPECT_EQ(again.time, clock.time);
-  const auto got = export_all(second);
-  for (const char* name : {"position", "velocity", "internal_energy", "stress"})
-    EXPECT_EQ(array_of(got, "all", name), array_of(expected, "all", name)) << name;
-  EXPECT_EQ(array_of(got, "ghost_nodes", "mass"), array_of(expected, "ghost_nodes", "mass"));
-  EXPECT_EQ(array_of(got, "ghost_nodes", "momentum"),
-            array_of(expected, "ghost_nodes", "momentum"));
+TEST_F(MpmServeRestart, AZoneWhoseNextStepWasMappedContinuesBitForBit) {
+  expect_bit_for_bit(
+      6, [](ServedMpm& zone, Clock& clock) { run_exporting_ghost_nodes(zone, clock, 6); },
+      [](ServedMpm& zone, Clock& clock) {
+        inject_spread(zone);
+        run_exporting_ghost_nodes(zone, clock, 6);
+      });
 }
 
 // Particles injected onto the map before a checkpoint: a restore cannot remake
 // that map (it would sum them in colour order), so the checkpoint drops it and
 // both zones map the next step afresh.
-TEST_F(MpmServeCheckpoint, ACheckpointAfterAnInjectionOntoTheMapContinuesBitForBit) {
-  ServedMpm first;
-  Clock clock{0.0, first.request(setup(blast_text(), regions_with_all(), dir_.string()))
-                       .header.setup_ack()
-                       .stable_dt()};
-  run_exporting_ghost_nodes(first, clock, 6);
-  inject_spread(first);
-  cosim::Message checkpoint;
-  checkpoint.header.mutable_checkpoint();
-  const auto written = first.request(std::move(checkpoint)).header.checkpoint_written();
-  const Clock at_checkpoint = clock;
-  run_exporting_ghost_nodes(first, clock, 6);
-  const auto expected = export_all(first);
-  first.shut_down();
-
-  ServedMpm second;
-  second.request(setup(blast_text(), regions_with_all(), dir_.string()));
-  cosim::Message restore;
-  restore.header.mutable_restore()->set_path(written.path());
-  restore.header.mutable_restore()->set_step(6);
-  second.request(std::move(restore));
-  Clock again = at_checkpoint;
-  run_exporting_ghost_nodes(second, again, 6);
-  const auto got = export_all(second);
-  for (const char* name : {"position", "velocity", "internal_energy", "stress"})
-    EXPECT_EQ(array_of(got, "all", name), array_of(expected, "all", name)) << name;
-  EXPECT_EQ(array_of(got, "ghost_nodes", "momentum"),
-            array_of(expected, "ghost_nodes", "momentum"));
+TEST_F(MpmServeRestart, ACheckpointAfterAnInjectionOntoTheMapContinuesBitForBit) {
+  expect_bit_for_bit(
+      6,
+      [](ServedMpm& zone, Clock& clock) {
+        run_exporting_ghost_nodes(zone, clock, 6);
+        inject_spread(zone);
+      },
+      [](ServedMpm& zone, Clock& clock) { run_exporting_ghost_nodes(zone, clock, 6); });
 }
 
 TEST_F(MpmServeCheckpoint, ACorruptedCheckpointIsRefusedAndTheStateKept) {
