@@ -20,7 +20,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-cosim::v1::Hello hello(bool v1_0_only, bool boundary_outflow) {
+cosim::v1::Hello hello(const ServeOptions& options) {
   cosim::v1::Hello hello;
   hello.set_role(cosim::v1::ROLE_EULER_SOLVER);
   hello.set_software("mpfd fdm_solver");
@@ -28,11 +28,15 @@ cosim::v1::Hello hello(bool v1_0_only, bool boundary_outflow) {
   hello.set_max_major(cosim::protocol_major);
   for (const char* capability : {"cell_regions", "gauges", "write_output", "checkpoint"})
     hello.add_capabilities(capability);
-  if (!v1_0_only)  // v1.1 (proto/README.md §14) and v1.2 (§15)
+  if (!options.offer_v1_0_only)  // v1.1 (proto/README.md §14) and v1.2 (§15)
     for (const char* capability : {"face_crossing", "boundary_outflow", "field_chunks",
-                                   "tracer_regions", "material_fields", "material_import"})
-      if (boundary_outflow || std::string_view(capability) != "boundary_outflow")
-        hello.add_capabilities(capability);
+                                   "tracer_regions", "material_fields", "material_import"}) {
+      const std::string_view name(capability);
+      if ((name == "boundary_outflow" && !options.offer_boundary_outflow) ||
+          (name == "material_import" && !options.offer_material_import))
+        continue;
+      hello.add_capabilities(capability);
+    }
   hello.set_pid(static_cast<std::uint32_t>(::getpid()));
   char host[256] = {};
   if (::gethostname(host, sizeof host - 1) == 0) hello.set_host(host);
@@ -113,8 +117,7 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
   cosim::TransportOptions transport;
   transport.idle_timeout = options.idle_timeout;
   cosim::Participant participant(context, options.endpoint, options.name, transport);
-  const cosim::v1::HelloAck session =
-      participant.connect(hello(options.offer_v1_0_only, options.offer_boundary_outflow));
+  const cosim::v1::HelloAck session = participant.connect(hello(options));
   if (session.major() != cosim::protocol_major) {
     const std::string text = "the coupler chose protocol v" + std::to_string(session.major()) +
                              "; solver '" + options.name + "' speaks v" +

@@ -19,6 +19,9 @@ struct ServeOptions {
   /// Offer boundary_outflow (v1.1): off, a coupler must treat the solver's outflow
   /// as v1.0 (0), for fallback tests of the run-long audits.
   bool offer_boundary_outflow = true;
+  /// Offer material_import (v1.2): off, a coupler must send cells without each
+  /// material's start, for fallback tests of the AFDMP handoff.
+  bool offer_material_import = true;
 };
 
 /// Sends Hello, then answers Setup, Exchange, WriteOutput, Checkpoint,

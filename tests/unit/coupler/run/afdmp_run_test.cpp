@@ -208,6 +208,39 @@ TEST(AfdmpRun, The_run_long_audit_books_what_leaves_through_open_faces) {
   EXPECT_TRUE(summary["details"]["protocol"]["mpm_outflow"].get<bool>());
 }
 
+void serve_fdm_without_material_import(zmq::context_t& context, const std::string& endpoint,
+                                       const std::string&) {
+  fdm::serve(context, {.endpoint = endpoint, .offer_material_import = false});
+}
+
+// An FDM without material_import (v1.2) gets the cells alone at the MPM -> FDM
+// handoff: the coupler neither asks the MPM for particle volumes nor sends each
+// material's start, the handoff still conserves to round-off, and summary.json says so.
+TEST(AfdmpRun, An_FDM_without_material_import_gets_the_cells_alone) {
+  const auto scene_file = scene_variant("afdmp_blast_2d", "no-material-import", kV3Fast);
+  const std::string text = read_text(scene_file);
+  const auto scene = config::parse_scene(text, scene_file.string());
+  zmq::context_t context;
+  cosim::Hub hub(context, "inproc://afdmp-no-material-import");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(
+      start_thread("fdm", serve_fdm_without_material_import, context, hub.endpoint()));
+  solvers.push_back(start_thread("mpm", embedded_serve("mpm"), context, hub.endpoint()));
+  CoupledRunOptions options;
+  options.out_dir = scene_file.parent_path() / "out";
+  options.progress = false;
+  io::prepare_output_directory(options.out_dir, true);
+  (void)run_afdmp(scene, text, hub, solvers, options);
+  std::ifstream in(options.out_dir / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_FALSE(summary["details"]["protocol"]["fdm_material_import"].get<bool>());
+  const auto& handoff = summary["details"]["afdmp"]["handoffs"][0];
+  EXPECT_FALSE(handoff["material_start"]["sent"].get<bool>());
+  EXPECT_EQ(handoff["export"]["chunks"], 6);  // no particle volume asked
+  expect_round_off(handoff);
+}
+
 void serve_fdm_without_outflow(zmq::context_t& context, const std::string& endpoint,
                                const std::string&) {
   fdm::serve(context, {.endpoint = endpoint, .offer_boundary_outflow = false});
