@@ -254,8 +254,12 @@ class Loop {
     gauges_.add(plan.advance, plan.advance ? plan.time + plan.dt : plan.time,
                 plan.mpm ? GaugeSamplers::owners : GaugeSamplers::fdm_only_mpm_asleep, fdm_request_,
                 mpm_request_);
+    // The solver that was slower last step gets its request first: over ipc/tcp the one
+    // woken second can wait ~2 ms for a core behind the first (docs/coupler.md, overhead).
+    const bool mpm_first = plan.mpm && mpm_slower_;
+    if (mpm_first) hub_.send_keeping_header("mpm", mpm_request_);
     hub_.send_keeping_header("fdm", fdm_request_);
-    if (plan.mpm) hub_.send_keeping_header("mpm", mpm_request_);
+    if (plan.mpm && !mpm_first) hub_.send_keeping_header("mpm", mpm_request_);
     auto replies = hub_.gather(peers());
     if (!plan.mpm) replies.emplace_back();
     step_.read(plan, replies[0], replies[1]);
@@ -270,7 +274,10 @@ class Loop {
     injected_mass_ += traffic.injected_mass;
     deposited_mass_ += traffic.deposited_mass;
     discarded_ += traffic.discarded;
-    return {advance_seconds(replies[0]), advance_seconds(replies[1])};
+    const double fdm_seconds = advance_seconds(replies[0]);
+    const double mpm_seconds = advance_seconds(replies[1]);
+    if (plan.advance) mpm_slower_ = mpm_seconds > fdm_seconds;
+    return {fdm_seconds, mpm_seconds};
   }
 
   /// A sleeping MPM gets no request; a Ping every options_.keep_alive restarts its
@@ -342,6 +349,7 @@ class Loop {
   Totals initial_;
   CoupledRunReport report_;
   double step_seconds_ = 0;
+  bool mpm_slower_ = false;  ///< the MPM's last Advance took longer than the FDM's
   std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
   double injected_mass_ = 0, deposited_mass_ = 0;
 };

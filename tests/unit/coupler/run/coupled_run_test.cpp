@@ -16,6 +16,8 @@
 #include "common/core/error.hpp"
 #include "common/core/require.hpp"
 #include "common/io/output_directory.hpp"
+#include "cosim/player.hpp"
+#include "cosim/recorder.hpp"
 #include "coupler/run/zone_layout.hpp"
 #include "fdm_solver/serve/serve.hpp"
 #include "tests/unit/coupler/run/still_mpm.hpp"
@@ -104,6 +106,51 @@ TEST(CoupledRun, Quiet_air_stays_quiet_and_conserves_over_the_zones) {
               1e-15);
   EXPECT_NEAR(summary["details"]["zones"]["mpm"]["mass"].get<double>(), 24 * 1.2 * 2.5e-6, 1e-15);
   EXPECT_TRUE(std::filesystem::exists(out / "fdm"));
+}
+
+/// The peer of each step's first Exchange request, in the order the coupler sent them.
+std::vector<std::string> first_request_of_each_step(const std::filesystem::path& recording) {
+  std::vector<std::string> first;
+  std::uint64_t step = 0;
+  cosim::Player player(recording);
+  while (auto record = player.next()) {
+    const auto& header = record->message.header;
+    if (record->direction != cosim::v1::DIRECTION_SENT || !header.has_exchange()) continue;
+    if (header.envelope().step() == step && !first.empty()) continue;
+    step = header.envelope().step();
+    first.push_back(record->peer);
+  }
+  return first;
+}
+
+std::vector<std::string> first_requests_with_mpm_advance_of(double wall_seconds) {
+  Harness h;
+  h.mpm.advance_wall_seconds = wall_seconds;
+  const std::string text = quiet_tube(4.0e-4);
+  const auto scene = config::parse_scene(text, "quiet.yaml");
+  std::vector<std::unique_ptr<SolverHandle>> solvers;
+  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
+  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  const auto out = fresh_dir("send-order");
+  const auto recording = out / "run.mpfdrec";
+  cosim::Recorder recorder(recording);
+  h.hub->attach_recorder(&recorder);
+  (void)run_cfdmp(scene, text, *h.hub, solvers, options(out));
+  h.hub->attach_recorder(nullptr);
+  recorder.close();
+  return first_request_of_each_step(recording);
+}
+
+TEST(CoupledRun, The_solver_slower_in_the_last_advance_gets_its_request_first) {
+  // Over ipc/tcp the solver woken second can wait a few ms for a core behind the
+  // first: the critical one goes first. Steps 0 and 1 follow no advance: FDM first.
+  const auto slow_mpm = first_requests_with_mpm_advance_of(1.0);
+  ASSERT_GE(slow_mpm.size(), 6U);
+  EXPECT_EQ(slow_mpm[0], "fdm");
+  EXPECT_EQ(slow_mpm[1], "fdm");
+  for (std::size_t n = 2; n < slow_mpm.size(); ++n) EXPECT_EQ(slow_mpm[n], "mpm") << "step " << n;
+  // The stand-in's 0 s against a real FDM advance: the FDM first throughout.
+  for (const auto& peer : first_requests_with_mpm_advance_of(0.0)) EXPECT_EQ(peer, "fdm");
 }
 
 TEST(CoupledRun, A_silent_solver_is_named_within_the_timeout_and_the_other_is_shut_down) {

@@ -8,7 +8,8 @@
 // `fatal_at_step`: at that step it answers a fatal NUMERICAL Error, then stays
 // connected and silent for `linger_ms` (a solver process still tearing down).
 // It counts the requests it gets between Setup and Shutdown and answers Activate
-// (a dormant zone), noting the Activate's sim_time.
+// (a dormant zone), noting the Activate's sim_time. `advance_wall_seconds` is the
+// wall time its AdvanceResult reports (0: faster than any FDM).
 
 #include <atomic>
 #include <cstdint>
@@ -52,6 +53,7 @@ struct StillMpm {
   std::atomic<int> requests_after_setup{0};  ///< every request but Setup and Shutdown
   std::atomic<double> activated_at{-1};      ///< sim_time of the Activate [s]; -1: none
   int idle_timeout_ms = 10000;               ///< how long it waits for a request
+  double advance_wall_seconds = 0;           ///< AdvanceResult.wall_seconds it reports
   std::atomic<bool> shut_down{false};        ///< it got Shutdown (was still serving)
 };
 
@@ -120,6 +122,7 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
         } else if (op.has_advance()) {
           time = op.advance().time() + op.advance().dt();
           result.mutable_advanced()->set_time(time);
+          result.mutable_advanced()->set_wall_seconds(mpm.advance_wall_seconds);
         } else if (op.has_remove()) {
           result.mutable_removed()->set_group(op.remove().group());
         } else if (op.has_propose_dt()) {
