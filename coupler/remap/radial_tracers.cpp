@@ -36,11 +36,26 @@ handoff::TracerPoints radial_tracers(const grid::UniformGrid& grid, const grid::
     return profile.material[static_cast<std::size_t>(above - profile.edges.begin() - 1)];
   };
 
+  // Whether some point of the cell lies within the profile's outer radius.
+  const double outer = profile.edges.back();
+  const auto reaches_profile = [&](const grid::Index3& cell) {
+    double r2 = 0.0;
+    for (int a = 0; a < axes; ++a) {
+      const double lo = grid.origin()[a] + cell[a] * grid.spacing()[a];
+      const double nearest = std::clamp(centre[a], lo, lo + grid.spacing()[a]);
+      r2 += (nearest - centre[a]) * (nearest - centre[a]);
+    }
+    return r2 < outer * outer;
+  };
+
+  std::vector<std::size_t> seeded;
+  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+    if (reaches_profile(grid.cell_of_index(c))) seeded.push_back(c);
   handoff::TracerPoints tracers;
-  const std::size_t count = grid.cell_count() * handoff::sub_cell_count(grid, tracers_per_axis);
+  const std::size_t count = seeded.size() * handoff::sub_cell_count(grid, tracers_per_axis);
   for (auto& x : tracers.position) x.reserve(count);
   tracers.material.reserve(count);
-  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+  for (const std::size_t c : seeded)
     handoff::for_each_sub_cell_centre(grid, grid.cell_of_index(c), tracers_per_axis,
                                       [&](const grid::Vec3& x) {
                                         for (int a = 0; a < 3; ++a)

@@ -3,10 +3,15 @@
 // step 4): the FDM needs material marks (T §3.2.2) besides the remapped
 // conserved fields. tracers_per_axis^d tracers per cell at the sub-cell
 // centres (where fdm_solver's seed_from_materials puts them), each of the
-// material of the shell holding its distance from the centre; outside the
-// profile (below r_0 or beyond r_N) the ambient material. The fraction of a
-// cell's tracers of material r approximates the remap's exact volume
-// fraction theta_r (spherical_to_cartesian.hpp) by the midpoint rule.
+// material of the shell holding its distance from the centre; below r_0 the
+// ambient material. The fraction of a cell's tracers of material r
+// approximates the remap's exact volume fraction theta_r
+// (spherical_to_cartesian.hpp) by the midpoint rule. Only the cells that reach
+// into the profile's ball (r < r_N) get tracers: the FDM gives a cell without
+// tracers the material of the nearest cell holding some (fdm_solver's
+// empty_cell_fill), which beyond the ball is the ambient air of its outer
+// shells. Tracers in the air far from the products would only be carried: on
+// the V4 far-field octant they took 63 % of the run.
 // Geometry as the remap: 3D grids spherical about `centre`; 2D x-y grids
 // cylindrical about the z axis through it.
 
