@@ -5,9 +5,12 @@
 #                 1D spherical MPM alone, h = 0.62 mm, to R = 1.3 m)
 #   octant_<n>    configs/afdmp_free_air_3d_far.yaml on n^3 cells (coupler run:
 #                 1D start to 0.2 m, then the FDM on [0, 1.25]^3 m)
+#   mpm_start_<n> the same octant with AFDMP's MPM start (START=mpm or both):
+#                 the charge sampled by the octant's own particles
 # Usage: bench/afdmp/v4_far.sh OUT_DIR [CELLS ...]   (default 50 80 125, i.e.
-#   h = 25, 15.625, 10 mm; measured 16 s / 2 min / 17 min on 2 shared cores,
-#   0.26 / 0.91 / 4.3 GB). Env: COUPLER, MPM_SOLVER (default build/...),
+#   h = 25, 15.625, 10 mm; measured 3 s / 17 s / 1.5 min on 2 shared cores,
+#   0.10 / 0.34 / 1.2 GB with the 1D start). Env: COUPLER, MPM_SOLVER (default build/...),
+#   START (spherical: the scene's, the default; mpm; both),
 #   FDM_AV (solver.fdm.artificial_viscosity for the octants; default the
 #   scene's, i.e. the solver default 1), CFL (time.cfl; default the scene's 0.3),
 #   SKIP_1D=1 (reuse OUT_DIR/1d_reference).
@@ -44,17 +47,27 @@ fi
 echo "label,run_dir,scene,h_m,wall_s,rss_kib" > "$runs"
 cat "$out/1d_reference.row" >> "$runs"
 
-for cells in "${cells_list[@]}"; do
-  name="octant_$cells"
-  edits=(-e "s/cells: \[125, 125, 125\]/cells: [$cells, $cells, $cells]/")
-  [[ -n "${CFL:-}" ]] && edits+=(-e "s/cfl: 0.3}/cfl: $CFL}/")
-  [[ -n "${FDM_AV:-}" ]] &&
-    edits+=(-e "s/^  method: afdmp\$/  method: afdmp\n  fdm: {artificial_viscosity: $FDM_AV}/")
-  sed "${edits[@]}" "$root/configs/afdmp_free_air_3d_far.yaml" > "$out/$name.yaml"
-  # --timeout: one FDM step of 2e6 cells takes seconds on a loaded machine
-  t=$(timed "$out/$name.log" "$coupler" run "$out/$name.yaml" --out "$out/$name" --overwrite \
-        --timeout 600)
-  h=$(printf "%.6g" "$(echo "1.25 / $cells" | bc -l)")
-  echo "h = $(printf '%.4g' "$(echo "1000 * $h" | bc -l)") mm,$out/$name,$out/$name.yaml,$h,$t" >> "$runs"
+starts=(spherical)
+case "${START:-spherical}" in
+  spherical) ;;
+  mpm) starts=(mpm) ;;
+  both) starts=(spherical mpm) ;;
+  *) echo "v4_far.sh: START must be spherical, mpm or both, got '$START'" >&2; exit 2 ;;
+esac
+for start in "${starts[@]}"; do
+  for cells in "${cells_list[@]}"; do
+    name="octant_$cells"
+    label_start=""
+    [[ $start == mpm ]] && name="mpm_start_$cells" && label_start=", MPM start"
+    options=(--start "$start")
+    [[ -n "${CFL:-}" ]] && options+=(--cfl "$CFL")
+    [[ -n "${FDM_AV:-}" ]] && options+=(--fdm-av "$FDM_AV")
+    /usr/bin/python3 "$here/v4_far_scene.py" "$out/$name.yaml" "$cells" "${options[@]}"
+    # --timeout: one FDM step of 2e6 cells takes seconds on a loaded machine
+    t=$(timed "$out/$name.log" "$coupler" run "$out/$name.yaml" --out "$out/$name" --overwrite \
+          --timeout 900)
+    h=$(printf "%.6g" "$(echo "1.25 / $cells" | bc -l)")
+    echo "h = $(printf '%.4g' "$(echo "1000 * $h" | bc -l)") mm$label_start,$out/$name,$out/$name.yaml,$h,$t" >> "$runs"
+  done
 done
 /usr/bin/python3 "$here/v4_far.py" "$out" "$runs"
