@@ -197,6 +197,9 @@ class Lagrangian1D:
         self.p, self.c = self.eos(self.rho, self.e, 0.0, self.n)
         self.q = np.zeros(n)
         self.pmax = self.p.copy()
+        self.r0c = 0.5 * (self.r[1:] + self.r[:-1])   # zone centres at t = 0 (mass-weighted on merges)
+        self.merges = 0
+        self.merge_ke_J = 0.0
 
     # burn fraction of the JWL zones at time t
     def burn(self, t, rho_jwl):
@@ -299,6 +302,76 @@ class Lagrangian1D:
         self.steps += 1
         self.dt_prev = dt
 
+    def merge_thin(self, dr_ref, frac, r0_max, rho_max, behind):
+        """Merges each gas zone thinner than frac dr_ref whose initial centre lies
+        below r0_max, whose density is below rho_max (expanded, not shocked) and
+        which lies more than `behind` zones inside the active region, with its
+        thinner gas neighbour: the node between them goes, its mass and momentum go
+        to the two neighbour nodes as the merged zone's half-masses ask, the kinetic
+        energy this loses goes into the merged zone's internal energy (total energy
+        unchanged). Spherical shells near the products thin as they expand
+        (dr ~ (r0/r)^2 rho0/rho: 1/20 of dr0 for the first air zone); they set dt
+        but hold no gauge."""
+        k = self.k
+        if k <= behind + 2:
+            return 0
+        z_end = k - behind
+        dr = self.r[1:z_end + 1] - self.r[:z_end]
+        cand = np.flatnonzero((dr < frac * dr_ref) & (self.r0c[:z_end] < r0_max)
+                              & (self.rho[:z_end] < rho_max))
+        cand = cand[cand >= self.jwl_end]
+        done = 0
+        last = None   # lowest zone merged so far in this call (candidates run downwards)
+        for z in cand[::-1]:
+            z = int(z)
+            left_ok = z - 1 >= self.jwl_end
+            right_ok = z + 1 < z_end
+            if not (left_ok or right_ok):
+                continue
+            if right_ok and (not left_ok or self.r[z + 2] - self.r[z + 1] <= self.r[z] - self.r[z - 1]):
+                a = z
+            else:
+                a = z - 1
+            if last is not None and a + 1 >= last:
+                continue
+            self._merge(a)
+            last = a
+            done += 1
+        if done:
+            k = self.k
+            self.p[:k], self.c[:k] = self.eos(self.rho[:k], self.e[:k], self.t, k)
+            self.q[:k], _ = self.viscosity(self.u[:k + 1], self.rho[:k], self.c[:k])
+        return done
+
+    def _merge(self, a):
+        """Merges zones a and a + 1 (removes node a + 1)."""
+        i = a + 1
+        m1, m2 = self.m[a], self.m[a + 1]
+        Ml, Mi, Mr = self.M[i - 1], self.M[i], self.M[i + 1]
+        ul, ui, ur = self.u[i - 1], self.u[i], self.u[i + 1]
+        Ml2, Mr2 = Ml + 0.5 * m2, Mr + 0.5 * m1
+        ul2 = (Ml * ul + 0.5 * m2 * ui) / Ml2
+        ur2 = (Mr * ur + 0.5 * m1 * ui) / Mr2
+        dke = 0.5 * (Ml * ul * ul + Mi * ui * ui + Mr * ur * ur - Ml2 * ul2 * ul2 - Mr2 * ur2 * ur2)
+        mm = m1 + m2
+        e_new = (m1 * self.e[a] + m2 * self.e[a + 1] + dke) / mm
+        self.M[i - 1], self.M[i + 1] = Ml2, Mr2
+        self.u[i - 1], self.u[i + 1] = ul2, ur2
+        self.r0c[a] = (m1 * self.r0c[a] + m2 * self.r0c[a + 1]) / mm
+        self.pmax[a] = max(self.pmax[a], self.pmax[a + 1])
+        self.m[a], self.e[a] = mm, e_new
+        self.r = np.delete(self.r, i)
+        self.u = np.delete(self.u, i)
+        self.M = np.delete(self.M, i)
+        for name in ("m", "e", "rho", "p", "c", "q", "pmax", "r0c", "mat"):
+            setattr(self, name, np.delete(getattr(self, name), a + 1))
+        r = self.r
+        self.rho[a] = mm / (FOUR_PI / 3.0 * (r[a + 1] ** 3 - r[a] ** 3))
+        self.n -= 1
+        self.k -= 1
+        self.merges += 1
+        self.merge_ke_J += dke
+
     def energies(self):
         ie = float(np.sum(self.m * self.e))
         ke = float(np.sum(0.5 * self.M * self.u * self.u))
@@ -391,6 +464,8 @@ def run_v4(args):
         dt = min(h.stable_dt(), args.t_end - h.t)
         h.step(dt)
         g.sample(h)
+        if args.merge_frac > 0 and h.steps % 20 == 0 and h.t > R_CHARGE / D_CJ:
+            h.merge_thin(args.dr, args.merge_frac, args.merge_r0 * R_CHARGE, RHO_AIR, 200)
         if h.steps % 200 == 0:
             ie, ke, w = h.energies()
             e_err_max = max(e_err_max, abs(ie + ke + w - e_total0))
@@ -406,19 +481,15 @@ def run_v4(args):
     e_err_max = max(e_err_max, abs(e_err))
     t, p, pq = g.arrays()
     rows = []
-    rc0 = None
-    # Lagrangian peak at the zone whose centre started at the gauge radius
-    r_init = np.concatenate([np.linspace(0, R_CHARGE, n_c + 1),
-                             np.linspace(R_CHARGE, args.r_out, n_a + 1)[1:]])
-    rc0 = 0.5 * (r_init[1:] + r_init[:-1])
-    shock_at_end = float(r_init[np.flatnonzero(np.abs(h.u) > 1e-6)[-1]]) if np.any(np.abs(h.u) > 1e-6) else 0.0
+    moving = np.flatnonzero(np.abs(h.u) > 1e-6)
+    front_end = float(h.r[moving[-1]]) if moving.size else 0.0
     for i, (z, R) in enumerate(zip(Z_GAUGES, radii)):
         pk = float(np.max(p[:, i]) - P0)
         ipk = int(np.argmax(p[:, i]))
         pqk = float(np.max(pq[:, i]) - P0)
         arr10 = first_crossing(t, p[:, i] - P0, 0.1 * pk)
         arr1k = first_crossing(t, p[:, i] - P0, 1e3)
-        lag = float(np.interp(R, rc0, h.pmax) - P0)
+        lag = float(np.interp(R, h.r0c, h.pmax) - P0)
         kb = v4_kb.overpressure(z)
         kb_arr = v4_kb.arrival_time(W_CHARGE, R)
         hen = henrych(z)
@@ -444,7 +515,7 @@ def run_v4(args):
     with open(os.path.join(args.out, "peak_profile.csv"), "w") as fh:
         fh.write("r0_m,Z,peak_overpressure_Pa,material\n")
         for j in sel:
-            fh.write(f"{rc0[j]:.7g},{rc0[j] / W3:.7g},{h.pmax[j] - P0:.7g},"
+            fh.write(f"{h.r0c[j]:.7g},{h.r0c[j] / W3:.7g},{h.pmax[j] - P0:.7g},"
                      f"{'tnt' if j < n_c else 'air'}\n")
     stride = max(1, t.size // 200000)
     np.savez_compressed(os.path.join(args.out, "histories.npz"), t=t[::stride], p=p[::stride],
@@ -464,7 +535,9 @@ def run_v4(args):
         "energy_error_rel_total": e_err_max / e_total0,
         "energy_end_J": {"internal": ie, "kinetic": ke, "boundary_work": w},
         "products_radius_end_m": float(h.r[n_c]),
-        "front_radius_end_m": shock_at_end,
+        "front_radius_end_m": front_end,
+        "merges": h.merges, "merge_ke_to_ie_J": h.merge_ke_J,
+        "merge": {"frac": args.merge_frac, "r0_max_m": args.merge_r0 * R_CHARGE},
         "active_zones_end": h.k,
     }
     with open(os.path.join(args.out, "run.json"), "w") as fh:
@@ -589,6 +662,10 @@ def main(argv=None):
     ap.add_argument("--cfl", type=float, default=0.5)
     ap.add_argument("--cq", type=float, default=2.0, help="quadratic viscosity coefficient")
     ap.add_argument("--cl", type=float, default=0.25, help="linear viscosity coefficient")
+    ap.add_argument("--merge-frac", type=float, default=0.5,
+                    help="merge expanded air zones thinner than this times --dr (0: never)")
+    ap.add_argument("--merge-r0", type=float, default=4.0,
+                    help="... only those that started within this many charge radii")
     ap.add_argument("--sedov", action="store_true", help="Sedov-Taylor validation instead")
     ap.add_argument("--gamma", type=float, default=1.4, help="Sedov gas gamma")
     ap.add_argument("--eos-check", action="store_true", help="print JWL hand values and exit")
