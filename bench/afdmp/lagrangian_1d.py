@@ -193,7 +193,7 @@ class Lagrangian1D:
         self.k = n if active_margin is None else min(n, self.jwl_end + active_margin + 1
                                                       if self.jwl_end else active_margin + 1)
         self.rho = self.m / vol
-        self.F = np.ones(self.jwl_end)
+        self.F = np.zeros(self.jwl_end) if burn_start is None else np.asarray(burn_start, float).copy()
         self.p, self.c = self.eos(self.rho, self.e, 0.0, self.n)
         self.q = np.zeros(n)
         self.pmax = self.p.copy()

@@ -23,6 +23,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lagrangian_1d as lag  # noqa: E402
 import v4_kb  # noqa: E402
 
+import numpy as np  # noqa: E402
+
 
 def load(run_dir):
     info = json.load(open(os.path.join(run_dir, "run.json")))
@@ -49,9 +51,34 @@ def label(run):
         extra.append(f"CFL {i['cfl']:g}")
     if i.get("merge", {}).get("frac", 0.5) == 0:
         extra.append("no merge")
+    if abs(i["dr_charge_m"] - i["dr_air_m"]) > 0.05 * i["dr_air_m"]:
+        extra.append(f"charge dr {i['dr_charge_m'] * 1e3:.3g} mm")
     if i.get("r_out_m", 1.6) != 1.6:
         extra.append(f"r_out {i['r_out_m']:g} m")
     return s + (" (" + ", ".join(extra) + ")" if extra else "")
+
+
+def front_fit(t, y, skip=3.0, width=20.0):
+    """Post-shock pressure extrapolated back to the shock: a quadratic in t fitted
+    to y = p - p0 over [t_peak + skip rise, t_peak + (skip + width) rise] (rise =
+    t_peak - t(10 % of peak)), evaluated at the 50 % crossing. It filters the
+    zone-to-zone ringing the quadratic viscosity leaves behind the shock."""
+    ip = int(np.argmax(y))
+    pk = y[ip]
+
+    def cross(level):
+        k = int(np.flatnonzero(y > level)[0])
+        return t[k - 1] + (level - y[k - 1]) / (y[k] - y[k - 1]) * (t[k] - t[k - 1])
+
+    t10, t50 = cross(0.1 * pk), cross(0.5 * pk)
+    rise = t[ip] - t10
+    sel = (t >= t[ip] + skip * rise) & (t <= t[ip] + (skip + width) * rise)
+    return float(np.polyval(np.polyfit(t[sel] - t50, y[sel], 2), 0.0))
+
+
+def front_fits(run):
+    h = np.load(os.path.join(run["dir"], "histories.npz"))
+    return [front_fit(h["t"], h["p"][:, i] - lag.P0) for i in range(h["p"].shape[1])]
 
 
 def pct(x):
@@ -75,6 +102,18 @@ def table(runs, variants):
               f"({pct(row['henrych_vs_kb'])}) | {pct(row['peak_vs_henrych'])} | "
               f"{row['arrival_10pct_s'] * 1e3:.4f} / {t_ext * 1e3:.4f} / {row['kb_arrival_s'] * 1e3:.4f} | "
               f"{pct(t_ext / row['kb_arrival_s'] - 1)} |")
+    print("\nPeak measures [kPa] of the two finest runs (gauge max p / gauge max p+q / the zone"
+          " that started at R: its max p / front fit of the gauge history):\n")
+    print("| Z | " + " | ".join(f"{r['info']['dr_air_m'] * 1e3:g} mm" for r in runs[-2:]) + " |")
+    print("|---|" + "---|" * len(runs[-2:]))
+    fits = [front_fits(r) for r in runs[-2:]]
+    for i, row in enumerate(fine["rows"]):
+        cells = []
+        for r, f in zip(runs[-2:], fits):
+            g = r["rows"][i]
+            cells.append(f"{g['peak_Pa'] / 1e3:.1f} / {g['peak_p_plus_q_Pa'] / 1e3:.1f} / "
+                         f"{g['lagrangian_zone_peak_Pa'] / 1e3:.1f} / {f[i] / 1e3:.1f}")
+        print(f"| {row['Z']:g} | " + " | ".join(cells) + " |")
     print("\nRuns:\n")
     print("| run | zones | steps | merges | wall [s] | energy error / charge energy |")
     print("|---|---|---|---|---|---|")
