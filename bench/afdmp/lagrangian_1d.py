@@ -27,6 +27,14 @@ Method (SI units throughout):
 * Zones that the wave has not reached are skipped (bit-for-bit unchanged):
   the active region ends 40 zones beyond the last node moving faster than
   1e-9 m/s, whose outer node is held still.
+* Air zones that started within --merge-r0 (4) charge radii thin as the shells
+  expand (the first to dr/20) and would set dt: once expanded (rho < 1.225) and
+  thinner than --merge-frac (0.5) dr, a zone is merged with its thinner air
+  neighbour, conserving mass, momentum and total energy (merge_thin; checked
+  every 20 steps, 200 zones or more behind the active front).
+* The time integration is the two-stage step above rather than a staggered
+  one-stage leapfrog: with velocities and positions at the same time level the
+  compatible energy update conserves total energy exactly at variable dt.
 * TNT: JWL p = A (1 - w/(R1 V)) e^{-R1 V} + B (1 - w/(R2 V)) e^{-R2 V} + w rho e,
   V = rho0/rho, rho0 1630, A 3.712e11, B 3.21e9, R1 4.15, R2 0.95, w 0.3,
   E0 6.993e9 J/m^3 (e0 = E0/rho0 = 4.290 MJ/kg held by every charge zone from
