@@ -7,6 +7,7 @@
 #include "common/core/error.hpp"
 #include "cosim/codec.hpp"
 #include "cosim/endpoint.hpp"
+#include "cosim/ipc_buffers.hpp"
 #include "cosim/large_frames.hpp"
 #include "cosim/recorder.hpp"
 
@@ -34,6 +35,7 @@ Hub::Hub(zmq::context_t& context, std::string_view bind_endpoint, TransportOptio
     throw Error("coupler cannot bind '" + endpoint.text + "': " + error.what());
   }
   endpoint_ = socket_.get(zmq::sockopt::last_endpoint);
+  if (endpoint.transport == Transport::ipc) ipc_paths_.push_back(endpoint.address);
 }
 
 std::string Hub::bind_also(std::string_view bind_endpoint) {
@@ -43,6 +45,7 @@ std::string Hub::bind_also(std::string_view bind_endpoint) {
   } catch (const zmq::error_t& error) {
     throw Error("coupler cannot bind '" + endpoint.text + "': " + error.what());
   }
+  if (endpoint.transport == Transport::ipc) ipc_paths_.push_back(endpoint.address);
   return socket_.get(zmq::sockopt::last_endpoint);
 }
 
@@ -220,6 +223,8 @@ std::vector<v1::Hello> Hub::accept(std::span<const std::string> peers, std::stri
     send(peer, std::move(ack));
     hellos.push_back(hello);
   }
+  // The connections now exist; libzmq sizes only tcp ones (ipc_buffers.hpp).
+  for (const auto& path : ipc_paths_) set_ipc_socket_buffers(path, options_.socket_buffer_bytes);
   return hellos;
 }
 

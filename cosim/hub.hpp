@@ -84,6 +84,7 @@ class Hub {
   zmq::socket_t socket_;
   TransportOptions options_;
   std::string endpoint_;
+  std::vector<std::string> ipc_paths_;  ///< addresses of the ipc endpoints bound
   std::string run_id_;
   std::uint64_t step_ = 0;
   double time_ = 0.0;

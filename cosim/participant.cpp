@@ -6,6 +6,7 @@
 #include "common/core/error.hpp"
 #include "cosim/codec.hpp"
 #include "cosim/endpoint.hpp"
+#include "cosim/ipc_buffers.hpp"
 #include "cosim/large_frames.hpp"
 #include "cosim/recorder.hpp"
 
@@ -40,6 +41,10 @@ v1::HelloAck Participant::connect(v1::Hello hello) {
                 body_name(ack.header) + "'");
   }
   session_ = ack.header.hello_ack();
+  // The connection now exists; libzmq sizes only tcp ones (ipc_buffers.hpp).
+  const Endpoint endpoint = parse_endpoint(endpoint_);
+  if (endpoint.transport == Transport::ipc)
+    set_ipc_socket_buffers(endpoint.address, options_.socket_buffer_bytes);
   return session_;
 }
 
