@@ -35,7 +35,8 @@ Hub::Hub(zmq::context_t& context, std::string_view bind_endpoint, TransportOptio
     throw Error("coupler cannot bind '" + endpoint.text + "': " + error.what());
   }
   endpoint_ = socket_.get(zmq::sockopt::last_endpoint);
-  if (endpoint.transport == Transport::ipc) ipc_paths_.push_back(endpoint.address);
+  if (endpoint.transport == Transport::ipc)  // as bound: "ipc://*" becomes a real path
+    ipc_paths_.push_back(parse_endpoint(endpoint_).address);
 }
 
 std::string Hub::bind_also(std::string_view bind_endpoint) {
@@ -45,8 +46,9 @@ std::string Hub::bind_also(std::string_view bind_endpoint) {
   } catch (const zmq::error_t& error) {
     throw Error("coupler cannot bind '" + endpoint.text + "': " + error.what());
   }
-  if (endpoint.transport == Transport::ipc) ipc_paths_.push_back(endpoint.address);
-  return socket_.get(zmq::sockopt::last_endpoint);
+  const std::string bound = socket_.get(zmq::sockopt::last_endpoint);
+  if (endpoint.transport == Transport::ipc) ipc_paths_.push_back(parse_endpoint(bound).address);
+  return bound;
 }
 
 void Hub::set_clock(std::uint64_t step, double time) {

@@ -1,6 +1,8 @@
 #include "cosim/ipc_buffers.hpp"
 
 #include <charconv>
+#include <cstddef>
+#include <cstring>
 #include <filesystem>
 
 #ifdef __linux__
@@ -24,15 +26,16 @@ bool address_is(int fd, const std::string& path, Query query) {
   if (address.sun_path[0] == '\0')  // abstract: "@name", not NUL-terminated
     return !path.empty() && path[0] == '@' &&
            std::string(address.sun_path + 1, size - 1) == path.substr(1);
-  return std::string(address.sun_path) == path;
+  return std::string(address.sun_path, strnlen(address.sun_path, size)) == path;
 }
 
 /// The fds of this process's connected AF_UNIX stream sockets at `path` (not the listener).
 std::vector<int> ipc_sockets(const std::string& path) {
   std::vector<int> found;
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd", error)) {
-    const std::string name = entry.path().filename().string();
+  for (std::filesystem::directory_iterator it("/proc/self/fd", error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
     int fd = -1;
     if (std::from_chars(name.data(), name.data() + name.size(), fd).ec != std::errc{}) continue;
     struct stat status {};
@@ -55,6 +58,7 @@ std::vector<int> ipc_sockets(const std::string& path) {
 
 int set_ipc_socket_buffers(const std::string& path, int bytes) {
   int count = 0;
+  if (bytes <= 0) return count;  // TransportOptions: 0 keeps the OS default
 #ifdef __linux__
   for (const int fd : ipc_sockets(path)) {
     const bool sent = setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &bytes, sizeof bytes) == 0;

@@ -14,7 +14,8 @@ namespace mpfd::cosim {
 /// AF_UNIX stream sockets whose own or peer address is `path` (an ipc endpoint's
 /// address: a file path, or "@name" for the abstract namespace), i.e. the
 /// connections ZeroMQ holds for it. The kernel caps the request at
-/// net.core.wmem_max / rmem_max. Returns how many sockets it set; 0 off Linux.
+/// net.core.wmem_max / rmem_max; `bytes` <= 0 keeps the default. Returns how
+/// many sockets it set; 0 off Linux.
 int set_ipc_socket_buffers(const std::string& path, int bytes);
 
 /// SO_SNDBUF of each such socket as the kernel holds it (twice the request).

@@ -58,7 +58,7 @@ for start in "${starts[@]}"; do
   for cells in "${cells_list[@]}"; do
     name="octant_$cells"
     label_start=""
-    [[ $start == mpm ]] && name="mpm_start_$cells" && label_start=", MPM start"
+    [[ $start == mpm ]] && name="mpm_start_$cells" && label_start=" MPM start"  # no comma: a CSV field
     options=(--start "$start")
     [[ -n "${CFL:-}" ]] && options+=(--cfl "$CFL")
     [[ -n "${FDM_AV:-}" ]] && options+=(--fdm-av "$FDM_AV")

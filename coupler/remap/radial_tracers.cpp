@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "common/core/error.hpp"
@@ -36,8 +37,12 @@ handoff::TracerPoints radial_tracers(const grid::UniformGrid& grid, const grid::
     return profile.material[static_cast<std::size_t>(above - profile.edges.begin() - 1)];
   };
 
-  // Whether some point of the cell lies within the profile's outer radius.
-  const double outer = profile.edges.back();
+  // Whether some point of the cell lies within the profile's outer radius. The
+  // fill gives an empty cell its nearest seeded cell's material: beyond the ball
+  // that is the outer shell's, so cells there go unseeded only if it is ambient.
+  const double outer = profile.material.back() == ambient_material
+                           ? profile.edges.back()
+                           : std::numeric_limits<double>::infinity();
   const auto reaches_profile = [&](const grid::Index3& cell) {
     double r2 = 0.0;
     for (int a = 0; a < axes; ++a) {

@@ -6,11 +6,12 @@
 // material of the shell holding its distance from the centre; below r_0 the
 // ambient material. The fraction of a cell's tracers of material r
 // approximates the remap's exact volume fraction theta_r
-// (spherical_to_cartesian.hpp) by the midpoint rule. Only the cells that reach
+// (spherical_to_cartesian.hpp) by the midpoint rule. When the outermost shell
+// is of the ambient material (the 1D stage's air), only the cells that reach
 // into the profile's ball (r < r_N) get tracers: the FDM gives a cell without
 // tracers the material of the nearest cell holding some (fdm_solver's
-// empty_cell_fill), which beyond the ball is the ambient air of its outer
-// shells. Tracers in the air far from the products would only be carried: on
+// empty_cell_fill), which beyond the ball is that outer shell's; otherwise every
+// cell gets them. Tracers in the air far from the products would only be carried: on
 // the V4 far-field octant they took 63 % of the run.
 // Geometry as the remap: 3D grids spherical about `centre`; 2D x-y grids
 // cylindrical about the z axis through it.
