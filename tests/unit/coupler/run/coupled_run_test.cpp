@@ -72,6 +72,13 @@ struct Harness {
     transport.reply_timeout = std::chrono::milliseconds(std::llround(timeout_seconds * 1e3));
     hub = std::make_unique<cosim::Hub>(context, "inproc://coupler-run-test", transport);
   }
+  /// The FDM and the stand-in MPM, each serving in a thread of this process.
+  std::vector<std::unique_ptr<SolverHandle>> start_solvers() {
+    std::vector<std::unique_ptr<SolverHandle>> solvers;
+    solvers.push_back(start_thread("fdm", serve_fdm, context, hub->endpoint()));
+    solvers.push_back(start_thread("mpm", serve_mpm, context, hub->endpoint()));
+    return solvers;
+  }
   zmq::context_t context;
   testing::StillMpm mpm;
   std::unique_ptr<cosim::Hub> hub;
@@ -81,9 +88,7 @@ TEST(CoupledRun, Quiet_air_stays_quiet_and_conserves_over_the_zones) {
   Harness h;
   const std::string text = quiet_tube(2.0e-3);
   const auto scene = config::parse_scene(text, "quiet.yaml");
-  std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  auto solvers = h.start_solvers();
   const auto out = fresh_dir("quiet");
   const auto report = run_cfdmp(scene, text, *h.hub, solvers, options(out));
 
@@ -128,9 +133,7 @@ std::vector<std::string> first_requests_with_mpm_advance_of(double wall_seconds)
   h.mpm.advance_wall_seconds = wall_seconds;
   const std::string text = quiet_tube(4.0e-4);
   const auto scene = config::parse_scene(text, "quiet.yaml");
-  std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  auto solvers = h.start_solvers();
   const auto out = fresh_dir("send-order");
   const auto recording = out / "run.mpfdrec";
   cosim::Recorder recorder(recording);
@@ -158,9 +161,7 @@ TEST(CoupledRun, A_silent_solver_is_named_within_the_timeout_and_the_other_is_sh
   h.mpm.silent_from_step = 5;
   const std::string text = quiet_tube(2.0e-3);
   const auto scene = config::parse_scene(text, "quiet.yaml");
-  std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  auto solvers = h.start_solvers();
   const auto out = fresh_dir("silent");
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -187,9 +188,7 @@ TEST(CoupledRun, A_solvers_fatal_error_at_step_0_stops_the_run_at_once_with_its_
   h.mpm.linger_ms = 1000;
   const std::string text = quiet_tube(2.0e-3);
   const auto scene = config::parse_scene(text, "quiet.yaml");
-  std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  auto solvers = h.start_solvers();
   const auto out = fresh_dir("fatal");
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -217,9 +216,7 @@ TEST(CoupledRun, An_fdm_failing_at_step_0_stops_the_run_with_its_message) {
                "bodies:\n  - {name: water, material: water, density: 1000, pressure: 1.0e5, "
                "shape: {box: {lower: [0.1, 0, 0], upper: [0.2, 0.01, 0.01]}}}\n");
   const auto scene = config::parse_scene(text, "water.yaml");
-  std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  auto solvers = h.start_solvers();
   const auto out = fresh_dir("fdm-step-0");
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -242,9 +239,7 @@ TEST(CoupledRun, An_emptied_mpm_zone_is_named_with_time_step_cell_position_and_w
   const std::string text = quiet_tube(2.0e-3);
   const auto scene = config::parse_scene(text, "quiet.yaml");
   const auto ghost = make_zone_layout(scene).ghost_cells;
-  std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, h.context, h.hub->endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, h.context, h.hub->endpoint()));
+  auto solvers = h.start_solvers();
   const auto out = fresh_dir("empty");
   try {
     run_cfdmp(scene, text, *h.hub, solvers, options(out));
