@@ -9,6 +9,7 @@
 
 #include "cosim/arrays.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "fdm_solver/active_box.hpp"
 #include "fdm_solver/serve/material_quantities.hpp"
 
 namespace mpfd::fdm {
@@ -250,9 +251,17 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
   std::optional<TracerSet> tracers;
   if (!tracer_regions.empty()) {
     // The tracers outside every imported box stay; those inside are replaced.
+    // A box of the whole grid replaces them all: they are not read, so a
+    // tracker whose seeding is pending stays unseeded (multi_material_tracker.hpp).
     tracers.emplace();
     const grid::UniformGrid& grid = zone.solver.state().grid;
-    if (const MultiMaterialTracker* tracker = zone.solver.tracker()) {
+    const ActiveBox all = whole_grid(grid);
+    const bool replaces_all =
+        std::any_of(tracer_regions.begin(), tracer_regions.end(), [&](const TracerRegion* r) {
+          return r->box.lower == all.lower && r->box.upper == all.upper;
+        });
+    const MultiMaterialTracker* tracker = replaces_all ? nullptr : zone.solver.tracker();
+    if (tracker != nullptr) {
       const TracerSet& kept = tracker->tracers();
       for (std::size_t t = 0; t < kept.size(); ++t) {
         const grid::Vec3 p{kept.position[0][t], kept.position[1][t], kept.position[2][t]};

@@ -82,13 +82,18 @@ MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
     : grid_(grid), eos_(std::move(materials)) {
   if (eos_.empty()) throw Error("multi-material tracker: needs at least one material EOS");
   for (const eos::AnyEos& e : eos_) eos::validate(e);
+  if (tracers_per_axis < 1)
+    throw Error("tracers: tracers per cell and axis must be >= 1, got " +
+                std::to_string(tracers_per_axis));
   const std::vector<int> indices = material_indices(cell_material);
+  if (indices.size() != grid_.cell_count())
+    throw Error("tracers: the cell material array has " + std::to_string(indices.size()) +
+                " entries, the grid " + std::to_string(grid_.cell_count()) + " cells");
   const int count = static_cast<int>(eos_.size());
   current_ = MaterialMap(indices, count);
   previous_ = current_;
   next_ = current_;
-  tracers_ = seed_from_materials(grid_, indices, tracers_per_axis);
-  bins_.rebuild(grid_, tracers_, count);
+  pending_tracers_per_axis_ = tracers_per_axis;
   states_ = MaterialStates(current_, density, energy);
   fill_queue_.reserve(grid_.cell_count());
 }
@@ -102,8 +107,28 @@ MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
   fill_queue_.reserve(grid_.cell_count());
 }
 
+void MultiMaterialTracker::seed_if_pending() const {
+  if (pending_tracers_per_axis_ == 0) return;
+  // current_ is still the constructor's classification: only advect() changes
+  // it, and advect() seeds first.
+  tracers_ = seed_from_materials(grid_, current_.material, pending_tracers_per_axis_);
+  bins_.rebuild(grid_, tracers_, static_cast<int>(eos_.size()));
+  pending_tracers_per_axis_ = 0;
+}
+
+const TracerSet& MultiMaterialTracker::tracers() const {
+  seed_if_pending();
+  return tracers_;
+}
+
+const TracerBins& MultiMaterialTracker::bins() const {
+  seed_if_pending();
+  return bins_;
+}
+
 AdvectionReport MultiMaterialTracker::advect(const VelocityView& velocity, double dt,
                                              const TracerBoundaries& faces) {
+  seed_if_pending();
   const AdvectionReport report = advect_tracers(grid_, velocity, dt, faces, tracers_);
   bins_.rebuild(grid_, tracers_, static_cast<int>(eos_.size()));
   classify_cells(grid_, bins_, tracers_, current_, next_);  // T (3-23)
@@ -129,6 +154,7 @@ void MultiMaterialTracker::restore(TrackerState state) {
   check_materials(state.materials, cells, materials);
   check_states(state.states, cells, materials);
   tracers_ = std::move(state.tracers);
+  pending_tracers_per_axis_ = 0;
   current_ = std::move(state.materials);
   previous_ = current_;  // as after update_pressure()
   next_ = current_;      // scratch of classify_cells, of the same sizes

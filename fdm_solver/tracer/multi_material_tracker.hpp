@@ -11,6 +11,10 @@
 // construction gives the initial pressure. Fields are plain arrays in the
 // grid's cell order (x fastest, no ghost cells). Between steps the whole state
 // the next step reads is TrackerState (a checkpoint saves and restores it).
+// The constructor's tracers are seeded at their first use (advect(), tracers(),
+// bins()), from the cell materials it was given: an AFDMP FDM whose cells and
+// tracers arrive by import before its first step never seeds the whole grid
+// (8 tracers per cell: 0.94 GB with their bins on V4's 125^3 far octant).
 
 #include <span>
 #include <vector>
@@ -40,9 +44,9 @@ class MultiMaterialTracker {
  public:
   /// `materials[r]` is the EOS of material index r (the scene's material
   /// order); `cell_material`, `density` [kg/m^3] and `energy` [J/kg] are the
-  /// initial cell fields. Seeds tracers_per_axis^d tracers per cell. Throws
-  /// mpfd::Error on a size mismatch, an invalid EOS or a material index
-  /// without an EOS.
+  /// initial cell fields. Seeds tracers_per_axis^d tracers per cell at their
+  /// first use (see the file comment). Throws mpfd::Error on a size mismatch,
+  /// an invalid EOS, a material index without an EOS or tracers_per_axis < 1.
   MultiMaterialTracker(const grid::UniformGrid& grid, std::vector<eos::AnyEos> materials,
                        std::span<const double> cell_material, std::span<const double> density,
                        std::span<const double> energy, int tracers_per_axis);
@@ -57,8 +61,13 @@ class MultiMaterialTracker {
   ClosureReport update_pressure(std::span<const double> density, std::span<const double> energy,
                                 std::span<double> pressure);
 
-  [[nodiscard]] const TracerSet& tracers() const { return tracers_; }
-  [[nodiscard]] const TracerBins& bins() const { return bins_; }
+  /// Seeds the constructor's tracers if they are still pending (not thread-safe:
+  /// the thread that steps the tracker reads it).
+  [[nodiscard]] const TracerSet& tracers() const;
+  [[nodiscard]] const TracerBins& bins() const;
+  /// The constructor's tracers are not seeded yet (no advect(), tracers(),
+  /// bins() or restore() since).
+  [[nodiscard]] bool tracers_pending() const { return pending_tracers_per_axis_ > 0; }
   /// Classification and theta_r after the last advect().
   [[nodiscard]] const MaterialMap& materials() const { return current_; }
   /// e_r, rho_r and closure status after the last update_pressure().
@@ -72,11 +81,16 @@ class MultiMaterialTracker {
   void restore(TrackerState state);
 
  private:
+  /// Seeds tracers_ and bins_ from current_ if the constructor left them pending.
+  void seed_if_pending() const;
+
   grid::UniformGrid grid_;
   std::vector<eos::AnyEos> eos_;
-  TracerSet tracers_;
-  TracerBins bins_;
-  MaterialMap previous_;  // at the last update_pressure()
+  // Seeded lazily: mutable so that the const accessors can seed on first use.
+  mutable TracerSet tracers_;
+  mutable TracerBins bins_;
+  mutable int pending_tracers_per_axis_ = 0;  // > 0: tracers_ not yet seeded
+  MaterialMap previous_;                      // at the last update_pressure()
   MaterialMap current_;
   MaterialMap next_;  // classify_cells output, swapped with current_
   MaterialStates states_;

@@ -113,6 +113,39 @@ void expect_same_tracker(const MultiMaterialTracker& a, const MultiMaterialTrack
   EXPECT_EQ(a.states().status, b.states().status);
 }
 
+TEST(MultiMaterialTracker, SeedsItsTracersAtTheirFirstUseAsTheConstructorWould) {
+  Slab s;
+  s.tracker.update_pressure(s.rho, s.e, s.p);  // the initial pressure needs no tracer
+  EXPECT_TRUE(s.tracker.tracers_pending());
+  const TracerSet expected = seed_from_materials(s.g, s.material, 4);
+  const TracerSet& seeded = s.tracker.tracers();
+  EXPECT_FALSE(s.tracker.tracers_pending());
+  EXPECT_EQ(seeded.position, expected.position);
+  EXPECT_EQ(seeded.material, expected.material);
+  EXPECT_EQ(seeded.volume, expected.volume);
+  EXPECT_EQ(s.tracker.bins().count(2, 0), 4u);
+
+  Slab stepped;  // advect() seeds first, then moves them by u dt = 2.5 mm
+  stepped.step();
+  EXPECT_FALSE(stepped.tracker.tracers_pending());
+  EXPECT_DOUBLE_EQ(stepped.tracker.tracers().position[0][0], expected.position[0][0] + 2.5e-3);
+}
+
+TEST(MultiMaterialTracker, ARestoreBeforeTheFirstUseNeverSeeds) {
+  Slab a;
+  a.step();
+  Slab b;
+  ASSERT_TRUE(b.tracker.tracers_pending());
+  b.tracker.restore(saved(a.tracker));
+  EXPECT_FALSE(b.tracker.tracers_pending());
+  EXPECT_EQ(b.tracker.tracers().position, a.tracker.tracers().position);
+}
+
+TEST(MultiMaterialTracker, RefusesFewerThanOneTracerPerAxisWhenConstructed) {
+  const Slab s;
+  EXPECT_THROW(MultiMaterialTracker(s.g, {tm::kTnt, tm::kAir}, s.material, s.rho, s.e, 0), Error);
+}
+
 TEST(MultiMaterialTracker, RestoredStateContinuesBitForBitAsTheTrackerThatHadIt) {
   Slab a;
   a.tracker.update_pressure(a.rho, a.e, a.p);
