@@ -34,41 +34,57 @@ std::vector<Message> slice_into_chunks(const Message& fields, std::string_view t
                                        std::span<const std::string> names,
                                        std::uint64_t max_chunk_bytes) {
   std::vector<Message> chunks;
-  for (std::size_t f = 0; f < names.size(); ++f) {
-    const auto name = split_field_name(names[f]);
+  ChunkSlicer slicer(fields, transfer_id, names, max_chunk_bytes);
+  while (auto chunk = slicer.next()) chunks.push_back(std::move(*chunk));
+  return chunks;
+}
+
+ChunkSlicer::ChunkSlicer(const Message& fields, std::string_view transfer_id,
+                         std::span<const std::string> names, std::uint64_t max_chunk_bytes)
+    : fields_(fields), transfer_id_(transfer_id), names_(names) {
+  for (const std::string& full : names) {
+    const auto name = split_field_name(full);
     if (!name)
-      throw Error("field '" + names[f] + "': expected '<region>/<quantity>' (proto/README.md §15)");
+      throw Error("field '" + full + "': expected '<region>/<quantity>' (proto/README.md §15)");
     const auto& array = find_descriptor(fields, name->region, name->quantity);
-    const zmq::message_t& frame = fields.frames.at(array.frame_index());
-    const std::vector<std::uint64_t> shape(array.shape().begin(), array.shape().end());
-    if (shape.empty()) throw Error("field '" + names[f] + "' is a scalar; fields have rows");
+    std::vector<std::uint64_t> shape(array.shape().begin(), array.shape().end());
+    if (shape.empty()) throw Error("field '" + full + "' is a scalar; fields have rows");
     const std::uint64_t row_bytes = values_per_row(shape) * dtype_size(array.dtype());
     const std::uint64_t rows_per_chunk =
         row_bytes == 0 ? shape[0] : std::max<std::uint64_t>(max_chunk_bytes / row_bytes, 1);
-    std::uint64_t offset = 0;
-    do {
-      const std::uint64_t rows = std::min(rows_per_chunk, shape[0] - offset);
-      Message chunk;
-      auto& body = *chunk.header.mutable_field_chunk();
-      body.set_transfer_id(std::string(transfer_id));
-      body.set_field(names[f]);
-      for (const auto extent : shape) body.add_field_shape(extent);
-      body.set_offset(offset);
-      body.set_chunk_index(static_cast<std::uint32_t>(chunks.size()));
-      body.set_last(f + 1 == names.size() && offset + rows == shape[0]);
-      std::vector<std::uint64_t> chunk_shape = shape;
-      chunk_shape[0] = rows;
-      zmq::message_t data(rows * row_bytes);
-      if (rows > 0)
-        std::memcpy(data.data(), static_cast<const std::byte*>(frame.data()) + offset * row_bytes,
-                    rows * row_bytes);
-      append_frame(chunk, {transfer_id, names[f], ArrayShape(chunk_shape), array.units()},
-                   array.dtype(), rows * values_per_row(shape), std::move(data));
-      chunks.push_back(std::move(chunk));
-      offset += rows;
-    } while (offset < shape[0]);
+    plan_.push_back({&array, std::move(shape), row_bytes, rows_per_chunk});
   }
-  return chunks;
+}
+
+std::optional<Message> ChunkSlicer::next() {
+  if (field_ == plan_.size()) return std::nullopt;
+  const Field& f = plan_[field_];
+  const std::string& name = names_[field_];
+  const zmq::message_t& frame = fields_.frames.at(f.array->frame_index());
+  const std::uint64_t rows = std::min(f.rows_per_chunk, f.shape[0] - offset_);
+  const bool field_done = offset_ + rows == f.shape[0];
+  Message chunk;
+  auto& body = *chunk.header.mutable_field_chunk();
+  body.set_transfer_id(transfer_id_);
+  body.set_field(name);
+  for (const auto extent : f.shape) body.add_field_shape(extent);
+  body.set_offset(offset_);
+  body.set_chunk_index(chunk_index_++);
+  body.set_last(field_ + 1 == plan_.size() && field_done);
+  std::vector<std::uint64_t> chunk_shape = f.shape;
+  chunk_shape[0] = rows;
+  zmq::message_t data(rows * f.row_bytes);
+  if (rows > 0)
+    std::memcpy(data.data(), static_cast<const std::byte*>(frame.data()) + offset_ * f.row_bytes,
+                rows * f.row_bytes);
+  append_frame(chunk, {transfer_id_, name, ArrayShape(chunk_shape), f.array->units()},
+               f.array->dtype(), rows * values_per_row(f.shape), std::move(data));
+  offset_ += rows;
+  if (field_done) {  // a field of 0 rows still sends its one chunk
+    ++field_;
+    offset_ = 0;
+  }
+  return chunk;
 }
 
 FieldAssembly::FieldAssembly(std::string transfer_id) : transfer_id_(std::move(transfer_id)) {}

@@ -35,6 +35,34 @@ std::vector<Message> slice_into_chunks(const Message& fields, std::string_view t
                                        std::span<const std::string> names,
                                        std::uint64_t max_chunk_bytes);
 
+/// The chunks of slice_into_chunks one at a time, so that a sender that sends
+/// each before making the next holds one chunk besides `fields`, not a second
+/// copy of every field. Checks every name when constructed (throws as
+/// slice_into_chunks), so that a bad name is found before any chunk is sent.
+/// `fields` and `names` must outlive the slicer.
+class ChunkSlicer {
+ public:
+  ChunkSlicer(const Message& fields, std::string_view transfer_id,
+              std::span<const std::string> names, std::uint64_t max_chunk_bytes);
+  /// The next chunk, or nothing after the one with last = true.
+  [[nodiscard]] std::optional<Message> next();
+
+ private:
+  struct Field {
+    const v1::ArrayDescriptor* array;
+    std::vector<std::uint64_t> shape;
+    std::uint64_t row_bytes;
+    std::uint64_t rows_per_chunk;
+  };
+  const Message& fields_;
+  std::string transfer_id_;
+  std::span<const std::string> names_;
+  std::vector<Field> plan_;
+  std::size_t field_ = 0;     // the field the next chunk slices
+  std::uint64_t offset_ = 0;  // its first row
+  std::uint32_t chunk_index_ = 0;
+};
+
 /// Collects the FieldChunk messages of one transfer into whole fields (README §15 rules 2–3).
 class FieldAssembly {
  public:

@@ -65,10 +65,11 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
                                          FieldTransferStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   try {
-    std::vector<cosim::Message> chunks =
-        cosim::slice_into_chunks(fields, transfer_id, names, max_chunk_bytes);
+    // One chunk at a time: a whole-grid handoff holds its fields once, not twice.
+    cosim::ChunkSlicer slicer(fields, transfer_id, names, max_chunk_bytes);
     FieldTransferStats sent;
-    for (auto& chunk : chunks) {
+    while (auto next = slicer.next()) {
+      cosim::Message& chunk = *next;
       const std::uint32_t index = chunk.header.field_chunk().chunk_index();
       const std::string field = chunk.header.field_chunk().field();
       sent.bytes += frame_bytes(chunk);

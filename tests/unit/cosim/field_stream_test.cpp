@@ -95,6 +95,31 @@ TEST(FieldStream, AFieldThatIsNotInTheRegionArraysIsNamed) {
   EXPECT_THROW((void)slice_into_chunks(fields, "t4", unqualified, 64), Error);
 }
 
+TEST(FieldStream, TheSlicerFindsABadNameBeforeMakingAnyChunk) {
+  const Message fields = region_fields(3);
+  const std::vector<std::string> names = {"cells/rho", "cells/E"};  // the second is absent
+  EXPECT_THROW((void)ChunkSlicer(fields, "t7", names, 64), Error);
+}
+
+TEST(FieldStream, TheSlicerMakesOneChunkPerCallAndThenNothing) {
+  const Message fields = region_fields(10);
+  const auto whole = slice_into_chunks(fields, "t8", kNames, 4 * sizeof(double));
+  ChunkSlicer slicer(fields, "t8", kNames, 4 * sizeof(double));
+  FieldAssembly assembly("t8");
+  std::size_t made = 0;
+  while (auto chunk = slicer.next()) {
+    ASSERT_LT(made, whole.size());
+    EXPECT_EQ(chunk->header.field_chunk().chunk_index(), made);
+    EXPECT_EQ(chunk->header.field_chunk().last(), made + 1 == whole.size());
+    assembly.add(*chunk);
+    ++made;
+  }
+  EXPECT_EQ(made, whole.size());
+  EXPECT_FALSE(slicer.next().has_value());
+  const Message back = assembly.take();
+  EXPECT_EQ(values(back, "cells", "momentum"), values(fields, "cells", "momentum"));
+}
+
 /// The MALFORMED message of adding `chunks` in order, or "" if none threw.
 std::string first_malformed(const std::string& transfer, const std::vector<Message>& chunks) {
   FieldAssembly assembly(transfer);
