@@ -47,6 +47,57 @@ handoff::ConservedView remapped_view(const remap::CartesianFields& f) {
   return {f.density, {f.momentum[0], f.momentum[1], f.momentum[2]}, f.total_energy};
 }
 
+/// The 1D stage's profile on the whole grid, the scene's initial state (the
+/// ambient air) filling what it does not cover, and the totals the handoff
+/// checks.
+struct SphericalCells {
+  handoff::ConservedCells cells;  ///< remapped + fill: what the FDM imports
+  Conserved remapped;             ///< of the remapped cells alone
+  Conserved radial;               ///< the same with the radial impulse in momentum[0]
+  Conserved fill;                 ///< of the ambient fill alone
+};
+
+/// The fill is added in place and only the cells are kept: the remap's
+/// per-material parts and covered fractions (96 B per cell with two materials)
+/// are gone before the FDM builds its state, the handoff's memory peak.
+SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& centre,
+                               const remap::RadialProfile& profile,
+                               const handoff::AmbientState& ambient) {
+  remap::CartesianFields f = remap::remap_radial_profile(grid, centre, profile);
+  const double volume = grid.cell_volume();
+  SphericalCells out;
+  out.remapped = cell_conserved(remapped_view(f), volume);
+  out.radial = out.remapped;
+  out.radial.momentum = {0, 0, 0};
+  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
+    const auto x = grid.cell_center(grid.cell_of_index(c));
+    const double d[3] = {x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]};
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (r > 0)
+      for (int a = 0; a < 3; ++a) out.radial.momentum[0] += f.momentum[a][c] * d[a] / r * volume;
+  }
+  out.radial.momentum_scale = std::abs(out.radial.momentum[0]);
+  const double ambient_e = ambient.density * (ambient.specific_internal_energy +
+                                              0.5 * (ambient.velocity[0] * ambient.velocity[0] +
+                                                     ambient.velocity[1] * ambient.velocity[1] +
+                                                     ambient.velocity[2] * ambient.velocity[2]));
+  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
+    const double rest = std::max(0.0, 1.0 - f.covered_fraction[c]);
+    const double density = rest * ambient.density;
+    const double energy = rest * ambient_e;
+    std::array<double, 3> momentum{};
+    for (int a = 0; a < 3; ++a) momentum[a] = rest * ambient.density * ambient.velocity[a];
+    add_cell(out.fill, density, momentum, energy, volume);
+    f.density[c] += density;
+    f.total_energy[c] += energy;
+    for (int a = 0; a < 3; ++a) f.momentum[a][c] += momentum[a];
+  }
+  out.cells.density = std::move(f.density);
+  out.cells.momentum = std::move(f.momentum);
+  out.cells.total_energy = std::move(f.total_energy);
+  return out;
+}
+
 /// Cells and tracers of the whole grid into the FDM (fields all_cells, all_tracers),
 /// with each material's start in the cells if `start` is given.
 cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
@@ -211,32 +262,12 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const grid::UniformGrid grid = whole_grid(scene);
   const remap::RadialShells shells = stage.shells();
   const remap::RadialProfile profile = shells.view();
-  const remap::CartesianFields remapped =
-      remap::remap_radial_profile(grid, stage.centre(), profile);
-  // What the profile does not cover keeps the scene's initial state (the ambient air).
   const auto ambient = handoff::ambient_state(scene);
-  const double ambient_e = ambient.density * (ambient.specific_internal_energy +
-                                              0.5 * (ambient.velocity[0] * ambient.velocity[0] +
-                                                     ambient.velocity[1] * ambient.velocity[1] +
-                                                     ambient.velocity[2] * ambient.velocity[2]));
-  handoff::ConservedCells cells;
-  cells.assign(grid.cell_count());
-  handoff::ConservedCells fill;
-  fill.assign(grid.cell_count());
-  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
-    const double rest = std::max(0.0, 1.0 - remapped.covered_fraction[c]);
-    fill.density[c] = rest * ambient.density;
-    fill.total_energy[c] = rest * ambient_e;
-    for (int a = 0; a < 3; ++a) fill.momentum[a][c] = rest * ambient.density * ambient.velocity[a];
-    cells.density[c] = remapped.density[c] + fill.density[c];
-    cells.total_energy[c] = remapped.total_energy[c] + fill.total_energy[c];
-    for (int a = 0; a < 3; ++a)
-      cells.momentum[a][c] = remapped.momentum[a][c] + fill.momentum[a][c];
-  }
+  const SphericalCells remapped = spherical_cells(grid, stage.centre(), profile, ambient);
   const handoff::TracerPoints tracers = remap::radial_tracers(
       grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
-  const auto done =
-      import_into_fdm(grid, cells, tracers, nullptr, "spherical_to_fdm", hub, settings, imported);
+  const auto done = import_into_fdm(grid, remapped.cells, tracers, nullptr, "spherical_to_fdm", hub,
+                                    settings, imported);
 
   // The remap conserves mass, energy and the radial impulse of the part of the
   // profile inside the grid (its vector momentum cancels by symmetry).
@@ -246,23 +277,11 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   received.energy = inside.energy;
   received.momentum[0] = inside.radial_impulse;
   received.momentum_scale = std::abs(inside.radial_impulse);
-  const double volume = grid.cell_volume();
-  Conserved sent = cell_conserved(remapped_view(remapped), volume);
-  sent.momentum = {0, 0, 0};
-  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
-    const auto x = grid.cell_center(grid.cell_of_index(c));
-    const double d[3] = {x[0] - stage.centre()[0], x[1] - stage.centre()[1],
-                         x[2] - stage.centre()[2]};
-    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    if (r > 0)
-      for (int a = 0; a < 3; ++a) sent.momentum[0] += remapped.momentum[a][c] * d[a] / r * volume;
-  }
-  sent.momentum_scale = std::abs(sent.momentum[0]);
-  const Conserved ambient_fill = cell_conserved(fill.view(), volume);
+  const Conserved& sent = remapped.radial;
+  const Conserved& ambient_fill = remapped.fill;
   const Conserved held =
       from_totals(std::span<const double>(done.totals().data(), done.totals().size()));
-  const Conserved sent_with_fill =
-      sum(cell_conserved(remapped_view(remapped), volume), ambient_fill);
+  const Conserved sent_with_fill = sum(remapped.remapped, ambient_fill);
   const ConservedError solver = relative_error(sent_with_fill, held);
   const ConservedError kernel = relative_error(received, sent);
   const auto stage_totals = stage.totals();

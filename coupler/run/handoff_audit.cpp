@@ -53,15 +53,10 @@ Conserved particle_conserved(const handoff::ParticleView& particles) {
 Conserved cell_conserved(const handoff::ConservedView& cells, double cell_volume) {
   handoff::check_sizes(cells, cells.density.size());
   Conserved c;
-  for (std::size_t i = 0; i < cells.density.size(); ++i) {
-    c.mass += cells.density[i] * cell_volume;
-    for (int a = 0; a < 3; ++a) {
-      const double p = cells.momentum[a][i] * cell_volume;
-      c.momentum[a] += p;
-      c.momentum_scale += std::abs(p);
-    }
-    c.energy += cells.total_energy[i] * cell_volume;
-  }
+  for (std::size_t i = 0; i < cells.density.size(); ++i)
+    add_cell(c, cells.density[i],
+             {cells.momentum[0][i], cells.momentum[1][i], cells.momentum[2][i]},
+             cells.total_energy[i], cell_volume);
   return c;
 }
 

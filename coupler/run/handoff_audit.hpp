@@ -11,6 +11,7 @@
 // blast at rest has a total of ~0), mass and energy relative to themselves.
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <span>
@@ -44,6 +45,18 @@ struct ConservedError {
 
 /// Particles: velocity components and internal energies [J] per particle.
 [[nodiscard]] Conserved particle_conserved(const handoff::ParticleView& particles);
+/// Adds one cell of volume `cell_volume` holding rho, rho v and E to `c`
+/// (what cell_conserved sums, in its order).
+inline void add_cell(Conserved& c, double density, const std::array<double, 3>& momentum,
+                     double total_energy, double cell_volume) {
+  c.mass += density * cell_volume;
+  for (int a = 0; a < 3; ++a) {
+    const double p = momentum[a] * cell_volume;
+    c.momentum[a] += p;
+    c.momentum_scale += std::abs(p);
+  }
+  c.energy += total_energy * cell_volume;
+}
 /// Cells of volume `cell_volume`: rho, rho v (three component arrays), E.
 [[nodiscard]] Conserved cell_conserved(const handoff::ConservedView& cells, double cell_volume);
 /// Cells as on the wire: rho [n], momentum [n, 3] (rho v), E [n]. Throws
