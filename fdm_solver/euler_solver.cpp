@@ -56,6 +56,14 @@ std::string position_text(const grid::Vec3& x) {
 
 }  // namespace
 
+SolverOptions SolverOptions::from_scene(const config::Scene& scene) {
+  const auto& fdm = scene.solver.fdm;
+  return {.cfl = scene.time.fdm_cfl(),
+          .viscosity = fdm.artificial_viscosity,
+          .switch_power = fdm.viscosity_switch_power,
+          .tracers_per_axis = fdm.tracers_per_axis};
+}
+
 EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
     : state_(initial_state(scene)), boundaries_(scene.boundaries), options_(options) {
   if (scene.materials.size() > 255) throw Error("fdm_solver: at most 255 materials");
@@ -276,7 +284,7 @@ double EulerSolver::sweep(int axis, double dt, bool twice, bool last_of_step) {
   const std::size_t stride = g.cell_index(axis == 0, axis == 1, axis == 2);
   const AxisBoundaries faces{boundaries_[static_cast<config::Face>(2 * axis)],
                              boundaries_[static_cast<config::Face>(2 * axis + 1)]};
-  const SweepStep step{dt, g.spacing()[axis], options_.viscosity};
+  const SweepStep step{dt, g.spacing()[axis], options_.viscosity, options_.switch_power};
   const double face_area = g.spacing()[a1] * g.spacing()[a2];
   std::array<bool, 2> at_lower{}, at_upper{};
   for (int k = 0; k < sweeps; ++k) {

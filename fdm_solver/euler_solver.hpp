@@ -23,8 +23,12 @@ namespace mpfd::fdm {
 struct SolverOptions {
   double cfl = 0.5;          ///< Courant number of each 1D sweep, (|u| + c) dt_sweep / dx
   double viscosity = 1.0;    ///< kappa, scale of the artificial viscosity (2-58)
+  int switch_power = 1;      ///< p of the switch theta^p, T (2-57); 1 is the thesis
   bool skip_quiet = true;    ///< update only the disturbed region (bitwise the same result)
   int tracers_per_axis = 2;  ///< massless tracers per cell and active axis (multi-material)
+
+  /// The scene's `time` CFL and `solver.fdm` options; skip_quiet on.
+  static SolverOptions from_scene(const config::Scene& scene);
 };
 
 /// Conserved totals over the domain: mass [kg], momentum x/y/z [kg m/s], energy [J].

@@ -32,10 +32,9 @@ constexpr const char* kAuditUnits[kVariables] = {"kg", "kg m/s", "kg m/s", "kg m
 
 void run_standalone(const config::Scene& scene, const RunOptions& options) {
   const Logger logger("fdm.run");
-  EulerSolver solver(scene, {.cfl = scene.time.fdm_cfl(),
-                             .viscosity = scene.solver.fdm.artificial_viscosity,
-                             .skip_quiet = options.skip_quiet,
-                             .tracers_per_axis = scene.solver.fdm.tracers_per_axis});
+  auto solver_options = SolverOptions::from_scene(scene);
+  solver_options.skip_quiet = options.skip_quiet;
+  EulerSolver solver(scene, solver_options);
   PrimitiveFields primitives;
   primitives.compute(solver.state(), solver.materials());
   std::vector<std::string> field_names;

@@ -34,6 +34,7 @@ struct SweepStep {
   double dt;         ///< time step of this sweep [s]
   double dx;         ///< cell size along the sweep [m]
   double viscosity;  ///< kappa, scales eta of T (2-58); 0 switches it off [-]
+  int switch_power;  ///< p, the viscosity goes with theta^p of T (2-57); 1...4 [-]
 };
 
 /// A cell whose state is not physical (density or pressure not > 0, or not finite).

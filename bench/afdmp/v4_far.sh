@@ -12,7 +12,9 @@
 #   0.10 / 0.34 / 2.2 GB with the 1D start). Env: COUPLER, MPM_SOLVER (default build/...),
 #   START (spherical: the scene's, the default; mpm; both),
 #   FDM_AV (solver.fdm.artificial_viscosity for the octants; default the
-#   scene's, i.e. the solver default 1), CFL (time.cfl; default the scene's 0.3),
+#   scene's, i.e. the solver default 1), FDM_SWITCH_POWER
+#   (solver.fdm.viscosity_switch_power, 1...4; default the scene's, i.e. 1),
+#   CFL (time.cfl; default the scene's 0.3),
 #   SKIP_1D=1 (reuse OUT_DIR/1d_reference).
 # Writes OUT_DIR/<run>/ (the run), OUT_DIR/<run>.yaml, OUT_DIR/runs.csv (label,
 # run dir, scene, h, wall time, peak RSS of the largest process) and, through
@@ -62,6 +64,7 @@ for start in "${starts[@]}"; do
     options=(--start "$start")
     [[ -n "${CFL:-}" ]] && options+=(--cfl "$CFL")
     [[ -n "${FDM_AV:-}" ]] && options+=(--fdm-av "$FDM_AV")
+    [[ -n "${FDM_SWITCH_POWER:-}" ]] && options+=(--switch-power "$FDM_SWITCH_POWER")
     /usr/bin/python3 "$here/v4_far_scene.py" "$out/$name.yaml" "$cells" "${options[@]}"
     # --timeout: one FDM step of 2e6 cells takes seconds on a loaded machine
     t=$(timed "$out/$name.log" "$coupler" run "$out/$name.yaml" --out "$out/$name" --overwrite \

@@ -1,11 +1,13 @@
 """Writes a variant of configs/afdmp_free_air_3d_far.yaml (V4 far field).
 Usage: v4_far_scene.py OUT.yaml CELLS [--start spherical|mpm] [--cfl C] [--fdm-av K]
+                       [--switch-power P]
   CELLS     cells per axis of the [0, 1.25]^3 m octant (h = 1.25 m / CELLS)
   --start   spherical (the scene's: 1D spherical MPM to 0.2 m, then the FDM) or
             mpm (AFDMP phase 1 on the octant's own grid, as configs/afdmp_free_air_3d.yaml:
             one air particle per cell, 8 per charge cell, uGIMP MUSL, p_ref ambient): the
             charge is then sampled by the 3D grid's particles, so its mass depends on h
-  --cfl     time.cfl (default the scene's 0.3); --fdm-av solver.fdm.artificial_viscosity"""
+  --cfl     time.cfl (default the scene's 0.3); --fdm-av solver.fdm.artificial_viscosity;
+  --switch-power solver.fdm.viscosity_switch_power (1...4)"""
 import argparse
 import os
 import re
@@ -41,6 +43,7 @@ def main():
     parser.add_argument("--start", choices=["spherical", "mpm"], default="spherical")
     parser.add_argument("--cfl", type=float)
     parser.add_argument("--fdm-av", type=float)
+    parser.add_argument("--switch-power", type=int, choices=[1, 2, 3, 4])
     args = parser.parse_args()
     if args.cells < 2:
         raise SystemExit(f"v4_far_scene.py: CELLS must be >= 2, got {args.cells}")
@@ -54,9 +57,14 @@ def main():
                             "    burn: program\n    particles_per_axis: 2   # 8 per cell\n")
         text = replace_once(text, "charges:\n", MPM_AIR_BODY + "charges:\n")
         text = text[:text.index("solver:\n")] + MPM_SOLVER
+    fdm = []
     if args.fdm_av is not None:
+        fdm.append(f"artificial_viscosity: {args.fdm_av}")
+    if args.switch_power is not None:
+        fdm.append(f"viscosity_switch_power: {args.switch_power}")
+    if fdm:
         text = re.sub(r"(?m)^  method: afdmp$",
-                      f"  method: afdmp\n  fdm: {{artificial_viscosity: {args.fdm_av}}}", text)
+                      f"  method: afdmp\n  fdm: {{{', '.join(fdm)}}}", text)
     open(args.out, "w").write(text)
 
 

@@ -178,8 +178,9 @@ enum class MpmUpdate { musl, usl, usavg };
 
 struct FdmOptions {
   double artificial_viscosity =
-      1.0;                   ///< coefficient of the adaptive viscosity, T (2-56)-(2-58) [-]
-  int tracers_per_axis = 2;  ///< massless tracers per cell and active axis, T §3.2.2 [-]
+      1.0;                         ///< coefficient of the adaptive viscosity, T (2-56)-(2-58) [-]
+  int viscosity_switch_power = 1;  ///< p of theta^p, the shock switch T (2-57) in (2-56) [-]
+  int tracers_per_axis = 2;        ///< massless tracers per cell and active axis, T §3.2.2 [-]
 };
 
 /// Multi-velocity-field contact between the MPM bodies (T §2.1.3); absent: one

@@ -213,6 +213,11 @@ std::shared_ptr<const Table<Solver>> solver_table() {
   fdm->optional("artificial_viscosity", &FdmOptions::artificial_viscosity,
                 Number("-", Range::at_least(0)),
                 "coefficient of the adaptive artificial viscosity, T (2-56)-(2-58)");
+  fdm->optional("viscosity_switch_power", &FdmOptions::viscosity_switch_power,
+                Integer(Range::closed(1, 4)),
+                "power p of the shock switch theta of T (2-57) in the viscosity of (2-56); 1 is "
+                "the thesis, 2 keeps the viscosity at jumps and lowers it where the density "
+                "bends gently (docs/fdm.md)");
   fdm->optional("tracers_per_axis", &FdmOptions::tracers_per_axis, Integer(Range::closed(1, 8)),
                 "massless tracers per cell along each active axis, seeded when the scene has "
                 "more than one material in the FDM zone, T §3.2.2");

@@ -61,9 +61,7 @@ ServedZone::ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup)
     : scene(std::move(scene_in)),
       scene_text(setup.scene_fragment()),
       output_dir(setup.output_dir()),
-      solver(scene, {.cfl = scene.time.fdm_cfl(),
-                     .viscosity = scene.solver.fdm.artificial_viscosity,
-                     .tracers_per_axis = scene.solver.fdm.tracers_per_axis}),
+      solver(scene, SolverOptions::from_scene(scene)),
       output(setup.output_dir(), scene),
       start_time(setup.start_time()) {}
 

@@ -180,8 +180,9 @@ Outcome run_scene(const std::string& text, Solver solver, std::optional<double> 
   if (solver == Solver::cfdmp) return run_cfdmp(text, work);
   const auto scene = config::parse_scene(text, "stability.yaml");
   if (solver == Solver::fdm) {
-    fdm::EulerSolver fdm(scene, {.cfl = cfl.value_or(scene.time.fdm_cfl()),
-                                 .viscosity = scene.solver.fdm.artificial_viscosity});
+    auto options = fdm::SolverOptions::from_scene(scene);
+    options.cfl = cfl.value_or(options.cfl);
+    fdm::EulerSolver fdm(scene, options);
     return run_solver(fdm, scene.time.end, fdm_samples);
   }
   auto settings = mpm::MpmSettings::from_scene(scene);

@@ -44,9 +44,7 @@ TEST(FdmServeFieldTransfer, ExportImportRoundTripOverIpcThenAStepBitwiseAsTheSol
 
   // The same state directly: rho in box C order (j fastest) from grid order.
   const auto parsed = config::parse_scene(scene, "corner.yaml");
-  EulerSolver direct(parsed, {.cfl = parsed.time.fdm_cfl(),
-                              .viscosity = parsed.solver.fdm.artificial_viscosity,
-                              .tracers_per_axis = parsed.solver.fdm.tracers_per_axis});
+  EulerSolver direct(parsed, SolverOptions::from_scene(parsed));
   const auto rho = array_of(fields, "all_cells", "rho");
   for (int i = 0; i < kNx; ++i)
     for (int j = 0; j < kNy; ++j)

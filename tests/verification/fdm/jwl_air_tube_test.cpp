@@ -67,9 +67,7 @@ struct TubeResult {
 TubeResult run_tube(int cells) {
   auto scene = config::load_scene(MPFD_SOURCE_DIR "/configs/jwl_air_tube.yaml");
   scene.domain.cells = {cells, 1, 1};
-  EulerSolver solver(scene, {.cfl = scene.time.fdm_cfl(),
-                             .viscosity = scene.solver.fdm.artificial_viscosity,
-                             .tracers_per_axis = scene.solver.fdm.tracers_per_axis});
+  EulerSolver solver(scene, SolverOptions::from_scene(scene));
   const Totals start = solver.totals();
   const double end = scene.time.end;
   solver.advance_to(end);

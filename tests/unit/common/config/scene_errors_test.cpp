@@ -67,6 +67,16 @@ TEST(SceneErrors, Text_where_a_number_belongs) {
                           "quoted string)"));
 }
 
+TEST(SceneErrors, Switch_power_outside_1_to_4_names_the_key_and_the_range) {
+  const std::string output = "output: {interval: 1.0e-4}\n";
+  for (const std::string power : {"0", "5", "1.5"})
+    EXPECT_THAT(errors_of(with(
+                    output, output + "solver: {fdm: {viscosity_switch_power: " + power + "}}\n")),
+                ElementsAre("scene.yaml:8:40: solver.fdm.viscosity_switch_power: expected an "
+                            "integer in [1, 4], got " +
+                            power));
+}
+
 TEST(SceneErrors, Scalar_where_a_point_belongs) {
   EXPECT_THAT(errors_of(with("lower: [0, 0, 0]", "lower: 0")),
               ElementsAre("scene.yaml:3:17: domain.lower: expected a list of 3 numbers, got 0"));

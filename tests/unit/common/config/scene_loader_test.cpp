@@ -57,6 +57,7 @@ TEST(SceneLoader, Defaults_fill_what_the_scene_leaves_out) {
   EXPECT_FALSE(s.output.gauge_interval.has_value());
   EXPECT_EQ(s.solver.method, Method::fdm);
   EXPECT_EQ(s.solver.fdm.artificial_viscosity, 1.0);
+  EXPECT_EQ(s.solver.fdm.viscosity_switch_power, 1);
   EXPECT_EQ(s.solver.mpm.shape_function, ShapeFunction::linear);
   EXPECT_EQ(s.solver.mpm.update, MpmUpdate::usavg);
   EXPECT_EQ(s.solver.mpm.gravity, (Vec3{0, 0, 0}));
@@ -129,7 +130,7 @@ charges:
 boundaries: {x_lower: symmetry, y_upper: wall}
 gauges: [{name: g1, position: [0, 0.5, 0.005]}]
 output: {interval: 1.0e-5, fields: [pressure, burn_fraction], gauge_interval: 1.0e-7}
-solver: {method: mpm, fdm: {artificial_viscosity: 0.5}, mpm: {shape_function: gimp, update: usl}}
+solver: {method: mpm, fdm: {artificial_viscosity: 0.5, viscosity_switch_power: 2}, mpm: {shape_function: gimp, update: usl}}
 )",
                               "plate.yaml");
   EXPECT_EQ(s.time.max_steps, 100000);
@@ -169,6 +170,7 @@ solver: {method: mpm, fdm: {artificial_viscosity: 0.5}, mpm: {shape_function: gi
   EXPECT_EQ(s.output.gauge_interval, 1.0e-7);
   EXPECT_EQ(s.solver.method, Method::mpm);
   EXPECT_EQ(s.solver.fdm.artificial_viscosity, 0.5);
+  EXPECT_EQ(s.solver.fdm.viscosity_switch_power, 2);
   EXPECT_EQ(s.solver.mpm.shape_function, ShapeFunction::gimp);
   EXPECT_EQ(s.solver.mpm.update, MpmUpdate::usl);
 }

@@ -12,12 +12,6 @@ namespace {
 
 using namespace testing;
 
-SolverOptions options_of(const config::Scene& scene) {
-  return {.cfl = scene.time.fdm_cfl(),
-          .viscosity = scene.solver.fdm.artificial_viscosity,
-          .tracers_per_axis = scene.solver.fdm.tracers_per_axis};
-}
-
 /// rho, momentum and E of a 2D box export over the whole grid, against the
 /// solver's state: the export is in box C order, (i, j) with j fastest.
 void expect_state_equals(const cosim::Message& reply, const std::string& region,
@@ -45,7 +39,7 @@ TEST(FdmServe, SodTwentyStepsOverInprocEqualTheSolverAdvancedDirectlyBitForBit) 
   ServedFdm fdm;
   const auto ack = fdm.request(setup(sod_text(100), {cell_box("tube", {0}, {100})}));
   const auto scene = config::parse_scene(sod_text(100), "sod.yaml");
-  EulerSolver direct(scene, options_of(scene));
+  EulerSolver direct(scene, SolverOptions::from_scene(scene));
   double dt = ack.header.setup_ack().stable_dt();
   EXPECT_EQ(dt, direct.stable_dt());
   ASSERT_EQ(ack.header.setup_ack().regions(0).quantities_size(), 3);  // rho, momentum, E
@@ -80,7 +74,7 @@ TEST(FdmServe, ApplySetOfAHotCellThenAdvanceEqualsWritingTheCellDirectly) {
   fdm.request(setup(still_air_2d_text(),
                     {cell_box("all", {0, 0}, {8, 8}), cell_box("hot", {3, 4}, {4, 5})}));
   const auto scene = config::parse_scene(still_air_2d_text(), "air.yaml");
-  EulerSolver direct(scene, options_of(scene));
+  EulerSolver direct(scene, SolverOptions::from_scene(scene));
   // A cell at (3, 4), not (4, 3): a transposed write would show in the comparison.
   const double hot[5] = {2.0, 30.0, -10.0, 0.0, 1.0e6 / 0.4 + 0.5 * (900.0 + 100.0) / 2.0};
   EulerState& state = direct.state_for_update({{3, 4, 0}, {4, 5, 1}});
