@@ -67,6 +67,9 @@ SolverOptions SolverOptions::from_scene(const config::Scene& scene) {
 EulerSolver::EulerSolver(const config::Scene& scene, SolverOptions options)
     : state_(initial_state(scene)), boundaries_(scene.boundaries), options_(options) {
   if (scene.materials.size() > 255) throw Error("fdm_solver: at most 255 materials");
+  if (options.switch_power < 1 || options.switch_power > 4)
+    throw Error("fdm_solver: the viscosity switch power must be 1, 2, 3 or 4, got " +
+                std::to_string(options.switch_power));
   for (const auto& m : scene.materials) eos_.push_back(m.eos);
   const auto& n = state_.grid.cells();
   const std::size_t longest = static_cast<std::size_t>(std::max({n[0], n[1], n[2]}));

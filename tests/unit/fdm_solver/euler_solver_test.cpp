@@ -15,6 +15,7 @@ using testing::gas_scene;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using testing::sod_tube;
+using ::testing::ThrowsMessage;
 
 void run_steps(EulerSolver& solver, int steps) {
   for (int s = 0; s < steps; ++s) solver.advance(solver.stable_dt());
@@ -132,6 +133,10 @@ TEST(EulerSolver, SwitchPowerActsOnlyThroughTheViscosity) {
                 1e-13 * std::abs(thesis.totals()[v]) + 1e-15)
         << v;
   EXPECT_EQ(run(0.0, 3).state().u[kDensity], run(0.0, 1).state().u[kDensity]);
+  for (const int power : {0, 5})
+    EXPECT_THAT([&] { EulerSolver(sod_tube(0, 10), {.switch_power = power}); },
+                ThrowsMessage<Error>(
+                    HasSubstr("switch power must be 1, 2, 3 or 4, got " + std::to_string(power))));
 }
 
 TEST(EulerSolver, SodAsA3DSceneMatchesThe1DRunInEveryLine) {
