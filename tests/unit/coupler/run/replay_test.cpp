@@ -22,10 +22,13 @@ using ::testing::HasSubstr;
 const std::filesystem::path kRecording =
     std::filesystem::path(MPFD_TEST_DATA) / "cfdmp_small.mpfdrec";
 
+/// ctest runs the tests of this file in parallel processes: each test writes
+/// to its own folder.
 ReplayOptions options_for(const std::string& solver) {
   ReplayOptions o;
   o.solver = solver;
-  o.out_dir = std::filesystem::temp_directory_path() / ("mpfd-replay-test-" + solver);
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  o.out_dir = std::filesystem::temp_directory_path() / ("mpfd-replay-test-" + solver + "-" + test);
   return o;
 }
 
