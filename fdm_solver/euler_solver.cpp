@@ -555,11 +555,12 @@ void EulerSolver::check_grid_of(const EulerState& state, const char* what) const
                 std::to_string(cells) + " cells");
 }
 
-void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet> tracers,
+void EulerSolver::import_state(EulerState cells, std::optional<TracerSet> tracers,
                                const MaterialStartView& start) {
   check_grid_of(cells, "imported");
   const std::size_t count = state_.grid.cell_count();
-  std::optional<MultiMaterialTracker> tracker;
+  const bool multi_material = tracker_.has_value();
+  std::optional<TrackerState> next;
   std::vector<double> energy(count);
   parallel_for(count, [&](std::size_t c) { energy[c] = specific_internal_energy(cells, c); });
   if (tracers || tracker_) {
@@ -568,16 +569,20 @@ void EulerSolver::import_state(const EulerState& cells, std::optional<TracerSet>
     for (std::size_t c = 0; c < count; ++c)
       fallback[c] = state_.material[c] == kMixedMaterial ? 0 : state_.material[c];
     TracerSet points = tracers ? std::move(*tracers) : tracker_->tracers();
-    tracker.emplace(
-        state_.grid, eos_,
+    // Once the points are accepted nothing throws (but for memory): the old
+    // tracker goes before the new one is built, one tracker's memory at a time.
+    next =
         tracker_from_points(state_.grid, static_cast<int>(eos_.size()), std::move(points), fallback,
-                            cells.u[kDensity], energy, start));
+                            cells.u[kDensity], energy, start, [this] { tracker_.reset(); });
   }
-  // Nothing below throws (but for memory): the import is all or nothing.
-  if (tracker && !tracker_) allocate_multi_material();
-  state_.u = cells.u;
-  if (tracker) {
-    tracker_ = std::move(tracker);
+  // Nothing below throws (but for memory): the import is all or nothing. A
+  // state from tracker_from_points passes the tracker's restore checks.
+  if (next) {
+    if (!multi_material) allocate_multi_material();
+    tracker_.emplace(state_.grid, eos_, std::move(*next));
+  }
+  state_.u = std::move(cells.u);
+  if (next) {
     energy_ = std::move(energy);
     update_materials();
   }

@@ -94,7 +94,10 @@ class EulerSolver {
   /// one), then the closure gives the pressures. Clock and outflow carry on;
   /// the disturbed box becomes the cells the new state disturbs (so quiet
   /// cells stay skipped). Throws mpfd::Error before changing anything.
-  void import_state(const EulerState& cells, std::optional<TracerSet> tracers,
+  /// `cells` is taken (moved from, it becomes the state) and the old tracker
+  /// is released before the new one is built from the tracker state: a
+  /// whole-grid import does not hold two trackers and two states at once.
+  void import_state(EulerState cells, std::optional<TracerSet> tracers,
                     const MaterialStartView& start = {});
 
   [[nodiscard]] Totals totals() const;

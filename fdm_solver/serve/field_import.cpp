@@ -43,7 +43,7 @@ EulerState imported_cells(const ServedZone& zone, const cosim::Message& fields,
   if (region.box.cells() != static_cast<long long>(now.grid.cell_count()))
     malformed(transfer, "region '" + region.name +
                             "' must cover the whole grid; a CELLS import sets every cell");
-  EulerState cells = now;
+  EulerState cells(now.grid);  // every cell is set below: the region covers the grid
   for (const Quantity q : {Quantity::rho, Quantity::momentum, Quantity::energy}) {
     const std::string name = std::string(info(q).name);
     const cosim::v1::ArrayDescriptor* array = nullptr;
@@ -175,38 +175,18 @@ void add_imported_tracers(const ServedZone& zone, const cosim::Message& fields,
   }
 }
 
-}  // namespace
+/// What a commit imports, read out of the assembled fields.
+struct ImportedFields {
+  EulerState cells;
+  ImportedMaterialStart start;
+  std::optional<TracerSet> tracers;
+};
 
-cosim::Message add_import_chunk(ServedZone& zone, const cosim::Message& chunk) {
-  const auto& body = chunk.header.field_chunk();
-  if (!zone.pending_import || zone.pending_import->transfer_id() != body.transfer_id())
-    zone.pending_import.emplace(body.transfer_id());  // a new transfer drops an unfinished one
-  try {
-    zone.pending_import->add(chunk);
-  } catch (const cosim::ProtocolError&) {
-    zone.pending_import.reset();
-    throw;
-  } catch (const std::exception& error) {  // a frame the chunk's descriptor does not match
-    zone.pending_import.reset();
-    throw cosim::ProtocolError(
-        cosim::v1::ERROR_CODE_MALFORMED,
-        "FieldChunk " + std::to_string(body.chunk_index()) + ": " + error.what(), false);
-  }
-  cosim::Message ack;
-  ack.header.mutable_field_chunk_ack()->set_transfer_id(body.transfer_id());
-  ack.header.mutable_field_chunk_ack()->set_chunk_index(body.chunk_index());
-  return ack;
-}
-
-cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
-  const auto& body = commit.header.field_import_commit();
-  const std::string& transfer = body.transfer_id();
-  if (!zone.pending_import || zone.pending_import->transfer_id() != transfer)
-    malformed(transfer, "no FieldChunk of this transfer arrived");
-  std::optional<cosim::FieldAssembly> pending;
-  pending.swap(zone.pending_import);  // consumed, whatever the outcome
-  const cosim::Message fields = pending->take();
-
+/// Checks the assembled `fields` of a commit (`with_tracers`: its tracers
+/// flag) and reads them out; the fields are released on return, before the
+/// solver builds its new state from what they held.
+ImportedFields read_import(const ServedZone& zone, const cosim::Message fields,
+                           const std::string& transfer, bool with_tracers) {
   const CellRegion* cells_region = nullptr;
   std::vector<const TracerRegion*> tracer_regions;
   for (const auto& array : fields.header.arrays()) {
@@ -238,17 +218,13 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
   }
   if (cells_region == nullptr)
     malformed(transfer, "carries no CELLS field; an import sets rho, momentum and E of the grid");
-  if (body.tracers() != !tracer_regions.empty())
-    malformed(transfer, std::string("tracers is ") + (body.tracers() ? "true" : "false") +
+  if (with_tracers != !tracer_regions.empty())
+    malformed(transfer, std::string("tracers is ") + (with_tracers ? "true" : "false") +
                             " but the import carries " + (tracer_regions.empty() ? "no" : "a") +
                             " TRACERS field");
-  const double sim_time = commit.header.envelope().sim_time();
-  if (!std::isfinite(sim_time))
-    malformed(transfer, "the commit's envelope sim_time must be finite; it becomes the clock");
-  const EulerState cells = imported_cells(zone, fields, *cells_region, transfer);
-  const ImportedMaterialStart start =
-      imported_material_start(zone, fields, *cells_region, transfer);
-  std::optional<TracerSet> tracers;
+  ImportedFields in{imported_cells(zone, fields, *cells_region, transfer),
+                    imported_material_start(zone, fields, *cells_region, transfer), std::nullopt};
+  std::optional<TracerSet>& tracers = in.tracers;
   if (!tracer_regions.empty()) {
     // The tracers outside every imported box stay; those inside are replaced.
     // A box of the whole grid replaces them all: they are not read, so a
@@ -273,8 +249,46 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
     for (const TracerRegion* region : tracer_regions)
       add_imported_tracers(zone, fields, *region, transfer, *tracers);
   }
+  return in;
+}
+
+}  // namespace
+
+cosim::Message add_import_chunk(ServedZone& zone, const cosim::Message& chunk) {
+  const auto& body = chunk.header.field_chunk();
+  if (!zone.pending_import || zone.pending_import->transfer_id() != body.transfer_id())
+    zone.pending_import.emplace(body.transfer_id());  // a new transfer drops an unfinished one
   try {
-    zone.solver.import_state(cells, std::move(tracers), start.view());
+    zone.pending_import->add(chunk);
+  } catch (const cosim::ProtocolError&) {
+    zone.pending_import.reset();
+    throw;
+  } catch (const std::exception& error) {  // a frame the chunk's descriptor does not match
+    zone.pending_import.reset();
+    throw cosim::ProtocolError(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "FieldChunk " + std::to_string(body.chunk_index()) + ": " + error.what(), false);
+  }
+  cosim::Message ack;
+  ack.header.mutable_field_chunk_ack()->set_transfer_id(body.transfer_id());
+  ack.header.mutable_field_chunk_ack()->set_chunk_index(body.chunk_index());
+  return ack;
+}
+
+cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
+  const auto& body = commit.header.field_import_commit();
+  const std::string& transfer = body.transfer_id();
+  if (!zone.pending_import || zone.pending_import->transfer_id() != transfer)
+    malformed(transfer, "no FieldChunk of this transfer arrived");
+  std::optional<cosim::FieldAssembly> pending;
+  pending.swap(zone.pending_import);  // consumed, whatever the outcome
+  const double sim_time = commit.header.envelope().sim_time();
+  if (!std::isfinite(sim_time))
+    malformed(transfer, "the commit's envelope sim_time must be finite; it becomes the clock");
+  ImportedFields in = read_import(zone, pending->take(), transfer, body.tracers());
+  pending.reset();
+  try {
+    zone.solver.import_state(std::move(in.cells), std::move(in.tracers), in.start.view());
   } catch (const Error& error) {  // import_state changes nothing when it throws
     malformed(transfer, error.what());
   }

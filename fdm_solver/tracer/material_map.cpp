@@ -50,6 +50,13 @@ void check_layout(const TracerBins& bins, const MaterialMap& map, const char* wh
 
 }  // namespace
 
+void check_at_most_two_materials(const grid::UniformGrid& grid, const TracerBins& bins) {
+  const std::size_t crowded = parallel_sum(bins.cell_count(), [&](std::size_t c) -> std::size_t {
+    return present_materials(bins, c).count >= 3 ? 1 : 0;
+  });
+  if (crowded > 0) fail_on_crowded_cell(grid, bins);
+}
+
 MaterialMap::MaterialMap(std::span<const int> cell_material, int count)
     : material_count(count),
       material(cell_material.begin(), cell_material.end()),

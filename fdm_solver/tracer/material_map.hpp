@@ -47,6 +47,10 @@ struct MaterialMap {
   }
 };
 
+/// Throws mpfd::Error naming the first cell that holds tracers of 3 or more
+/// materials (the mixed-cell closure handles two), as classify_cells would.
+void check_at_most_two_materials(const grid::UniformGrid& grid, const TracerBins& bins);
+
 /// Classifies every cell from the binned tracers, T (3-23); an empty cell
 /// copies `previous`. Resizes `next` once, then reuses it. Throws mpfd::Error
 /// naming the first cell that holds tracers of 3 or more materials, or if

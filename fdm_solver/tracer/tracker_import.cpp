@@ -79,7 +79,8 @@ std::optional<std::array<int, 2>> start_pair(const MaterialMap& map, const Mater
 TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_count,
                                  TracerSet points, std::span<const int> fallback_material,
                                  std::span<const double> density, std::span<const double> energy,
-                                 const MaterialStartView& start) {
+                                 const MaterialStartView& start,
+                                 const std::function<void()>& accepted) {
   const std::size_t cells = grid.cell_count();
   if (fallback_material.size() != cells || density.size() != cells || energy.size() != cells)
     refuse("the grid has " + std::to_string(cells) + " cells; got " +
@@ -91,32 +92,36 @@ TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_cou
   // No carried volumes yet: all zero makes classify_cells take theta from the
   // tracer counts, as equal volumes per tracer would.
   points.volume.assign(points.size(), 0.0);
-  TracerBins bins;
-  bins.rebuild(grid, points, material_count);
-  const MaterialMap previous(fallback_material, material_count);
   TrackerState state{std::move(points), {}, {}};
-  classify_cells(grid, bins, state.tracers, previous, state.materials);  // T (3-23)
-  std::vector<std::size_t> queue;
-  queue.reserve(cells);
-  fill_empty_cells(grid, bins, state.materials, queue);
-  // Mixed cells with their materials' own start: theta_r from it (the carried
-  // volumes below follow), e_r and rho_r after the cell-state default.
-  std::vector<std::uint8_t> own_start(start.empty() ? 0 : cells, 0);
   MaterialMap& map = state.materials;
-  for (std::size_t c = 0; c < own_start.size(); ++c) {
-    if (!map.is_mixed(c)) continue;
-    const auto pair = start_pair(map, start, c);
-    if (!pair) continue;
-    const std::size_t a = static_cast<std::size_t>((*pair)[0]) * cells + c;
-    const std::size_t b = static_cast<std::size_t>((*pair)[1]) * cells + c;
-    const double theta_a =
-        start.volume_fraction[a] / (start.volume_fraction[a] + start.volume_fraction[b]);
-    if (!(theta_a > 0.0 && theta_a < 1.0)) continue;
-    map.theta[a] = theta_a;
-    map.theta[b] = 1.0 - theta_a;  // T (3-27)
-    own_start[c] = 1;
+  std::vector<std::uint8_t> own_start(start.empty() ? 0 : cells, 0);
+  {  // the bins and scratch go before the states are made: the import's memory peak
+    TracerBins bins;
+    bins.rebuild(grid, state.tracers, material_count);
+    check_at_most_two_materials(grid, bins);
+    if (accepted) accepted();
+    const MaterialMap previous(fallback_material, material_count);
+    classify_cells(grid, bins, state.tracers, previous, map);  // T (3-23)
+    std::vector<std::size_t> queue;
+    queue.reserve(cells);
+    fill_empty_cells(grid, bins, map, queue);
+    // Mixed cells with their materials' own start: theta_r from it (the carried
+    // volumes below follow), e_r and rho_r after the cell-state default.
+    for (std::size_t c = 0; c < own_start.size(); ++c) {
+      if (!map.is_mixed(c)) continue;
+      const auto pair = start_pair(map, start, c);
+      if (!pair) continue;
+      const std::size_t a = static_cast<std::size_t>((*pair)[0]) * cells + c;
+      const std::size_t b = static_cast<std::size_t>((*pair)[1]) * cells + c;
+      const double theta_a =
+          start.volume_fraction[a] / (start.volume_fraction[a] + start.volume_fraction[b]);
+      if (!(theta_a > 0.0 && theta_a < 1.0)) continue;
+      map.theta[a] = theta_a;
+      map.theta[b] = 1.0 - theta_a;  // T (3-27)
+      own_start[c] = 1;
+    }
+    assign_tracer_volumes(grid, bins, map, state.tracers);  // T (3-21), (3-22)
   }
-  assign_tracer_volumes(grid, bins, map, state.tracers);  // T (3-21), (3-22)
   state.states = MaterialStates(map, density, energy);
   for (std::size_t c = 0; c < own_start.size(); ++c) {
     if (own_start[c] == 0) continue;

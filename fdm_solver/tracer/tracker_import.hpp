@@ -15,6 +15,7 @@
 // tracers' carried volumes follow, T (3-22)), rho_r and e_r from it; any other
 // mixed cell, and every single-material cell, starts from the cell's state.
 
+#include <functional>
 #include <span>
 
 #include "common/grid/uniform_grid.hpp"
@@ -39,12 +40,15 @@ struct MaterialStartView {
 /// at all lies in the grid. `start`, if not empty, is each material's own
 /// state (see above). Throws mpfd::Error naming the first tracer outside
 /// the grid or with a material outside [0, material_count), a cell holding
-/// three materials, or a size mismatch.
+/// three materials, or a size mismatch; all of these before `accepted` is
+/// called, once, after which nothing throws but for memory (a solver
+/// releases the tracker this one replaces there: one tracker at a time).
 [[nodiscard]] TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_count,
                                                TracerSet points,
                                                std::span<const int> fallback_material,
                                                std::span<const double> density,
                                                std::span<const double> energy,
-                                               const MaterialStartView& start = {});
+                                               const MaterialStartView& start = {},
+                                               const std::function<void()>& accepted = {});
 
 }  // namespace mpfd::fdm

@@ -210,6 +210,23 @@ TEST(FdmFieldImport, ImportStateThatFailsInTheTrackerChangesNothing) {
   EXPECT_EQ(target->solver.active_box().upper, box.upper);
 }
 
+TEST(FdmFieldImport, ImportStateRefusedByTheTrackerKeepsTheOldTracker) {
+  // The old tracker is released before the new one is built (one tracker's
+  // memory at a time), so a refusal must come before that.
+  const auto source = transfer_zone();
+  advance_stable(*source, 2);
+  const auto target = transfer_zone();
+  advance_stable(*target, 3);
+  const SolverImage before(target->solver);
+  TracerSet tracers = source->solver.tracker()->tracers();
+  tracers.position[1].front() = 1.0e3;  // outside the grid
+  EXPECT_THROW(target->solver.import_state(source->solver.state(), tracers), Error);
+  EXPECT_EQ(SolverImage(target->solver), before);
+  ASSERT_NE(target->solver.tracker(), nullptr);
+  advance_stable(*target, 1);  // and it still steps
+  EXPECT_EQ(target->solver.steps(), before.steps + 1);
+}
+
 TEST(FdmFieldImport, ImportDone_TotalsEqualEulerSolverTotals) {
   const auto source = transfer_zone();
   advance_stable(*source, 4);

@@ -94,6 +94,42 @@ TEST(TrackerImport, RefusesATracerOutsideTheGridNamingIt) {
   }
 }
 
+TEST(TrackerImport, RefusesACellOfThreeMaterialsBeforeAcceptingThePoints) {
+  const Corner c;
+  TracerSet points = c.seeded().tracers();
+  points.add({0.015, 0.005, 0.005}, 1, 0.0);  // cell (1, 0) of products: air ...
+  points.add({0.016, 0.004, 0.005}, 2, 0.0);  // ... and a third material
+  int accepted = 0;
+  try {
+    (void)tracker_from_points(c.g, 3, points, c.fallback, c.rho, c.e, {}, [&] { ++accepted; });
+    FAIL() << "no error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("cell (1, 0, 0)"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("materials 0, 1, 2"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(accepted, 0);  // a solver still holds its old tracker
+}
+
+TEST(TrackerImport, AcceptsOnceAfterEveryCheckAndTheStateDoesNotDependOnIt) {
+  const Corner c;
+  const TracerSet points = c.seeded().tracers();
+  int accepted = 0;
+  const TrackerState with =
+      tracker_from_points(c.g, 2, points, c.fallback, c.rho, c.e, {}, [&] { ++accepted; });
+  EXPECT_EQ(accepted, 1);
+  const TrackerState without = tracker_from_points(c.g, 2, points, c.fallback, c.rho, c.e);
+  EXPECT_EQ(with.materials.theta, without.materials.theta);
+  EXPECT_EQ(with.tracers.volume, without.tracers.volume);
+  EXPECT_EQ(with.states.energy, without.states.energy);
+
+  TracerSet outside = points;
+  outside.position[0][3] = -1.0;
+  EXPECT_THROW(
+      (void)tracker_from_points(c.g, 2, outside, c.fallback, c.rho, c.e, {}, [&] { ++accepted; }),
+      Error);
+  EXPECT_EQ(accepted, 1);
+}
+
 /// A 1D row of 3 cells of 1 cm imported with each material's own state:
 /// products (0) in cell 0, air (1) in cell 2, and cell 1 mixed with two
 /// tracers of each (theta 1/2 by counts) but theta_products = 0.6 in the start.
