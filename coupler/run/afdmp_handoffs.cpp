@@ -99,28 +99,32 @@ SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& 
 }
 
 /// Cells and tracers of the whole grid into the FDM (fields all_cells, all_tracers),
-/// with each material's start in the cells if `start` is given.
+/// with each material's start in the cells if `start` is given. `cells` and
+/// `start` are consumed: released once on the wire, the wire once sent, so
+/// that neither is held while the FDM builds its state (the handoff's peak).
 cosim::v1::FieldImportDone import_into_fdm(const grid::UniformGrid& grid,
-                                           const handoff::ConservedCells& cells,
+                                           handoff::ConservedCells cells,
                                            const handoff::TracerPoints& tracers,
-                                           const handoff::MaterialStart* start,
+                                           std::optional<handoff::MaterialStart> start,
                                            std::string_view transfer, cosim::Hub& hub,
                                            const HandoffSettings& settings,
                                            FieldTransferStats& stats) {
   cosim::Message fields;
   add_cells_to_wire(grid, cells.view(), region::kAllCells, fields);
+  cells = {};
   add_tracers_to_wire(tracers.view(), region::kAllTracers, fields);
   auto names = field_names(region::kAllCells, {"rho", "momentum", "E"});
-  if (start != nullptr) {
+  if (start) {
     add_material_start_to_wire(grid, *start, region::kAllCells, fields);
+    start.reset();
     for (auto& name :
          field_names(region::kAllCells, {"volume_fraction", "material_density", "material_energy"}))
       names.push_back(std::move(name));
   }
   for (auto& name : field_names(region::kAllTracers, {"position", "material"}))
     names.push_back(std::move(name));
-  return import_fields(hub, "fdm", transfer, fields, names, settings.max_chunk_bytes, true,
-                       settings.timeout, &stats);
+  return import_fields(hub, "fdm", transfer, std::move(fields), names, settings.max_chunk_bytes,
+                       true, settings.timeout, &stats);
 }
 
 /// The fluid box's material start in the whole grid; the other cells have none.
@@ -220,7 +224,10 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
     handoff::append_regular_tracers(grid, fsi_box, ambient.material,
                                     scene.solver.fdm.tracers_per_axis, fdm.tracers);
   }
-  const auto done = import_into_fdm(grid, cells, fdm.tracers, material ? &*material : nullptr,
+  // What the FDM should hold: the fluid cells sent plus the FSI placeholder.
+  const Conserved whole = cell_conserved(cells.view(), grid.cell_volume());
+  const nlohmann::json material_json = start_json(material ? &*material : nullptr);
+  const auto done = import_into_fdm(grid, std::move(cells), fdm.tracers, std::move(material),
                                     "mpm_to_fdm", hub, settings, imported);
 
   const Conserved received = particle_conserved(particles.view());
@@ -228,8 +235,6 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   const Conserved held =
       from_totals(std::span<const double>(done.totals().data(), done.totals().size()));
   const ConservedError kernel = relative_error(received, sent);
-  // What the FDM should hold: the fluid cells sent plus the FSI placeholder.
-  const Conserved whole = cell_conserved(cells.view(), grid.cell_volume());
   const Conserved placeholder = difference(whole, sent);
   const ConservedError solver = relative_error(whole, held);
   HandoffRecord record;
@@ -248,7 +253,7 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
       {"relative_error",
        {{"sent_vs_received", kernel.summary()}, {"solver_vs_sent", solver.summary()}}},
       {"kinetic_to_internal_J", fdm.kinetic_to_internal},
-      {"material_start", start_json(material ? &*material : nullptr)},
+      {"material_start", material_json},
       {"export", transfer_json(exported)},
       {"import", transfer_json(imported)},
       {"wall_s", seconds_since(start)}};
@@ -263,11 +268,11 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const remap::RadialShells shells = stage.shells();
   const remap::RadialProfile profile = shells.view();
   const auto ambient = handoff::ambient_state(scene);
-  const SphericalCells remapped = spherical_cells(grid, stage.centre(), profile, ambient);
+  SphericalCells remapped = spherical_cells(grid, stage.centre(), profile, ambient);
   const handoff::TracerPoints tracers = remap::radial_tracers(
       grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
-  const auto done = import_into_fdm(grid, remapped.cells, tracers, nullptr, "spherical_to_fdm", hub,
-                                    settings, imported);
+  const auto done = import_into_fdm(grid, std::move(remapped.cells), tracers, std::nullopt,
+                                    "spherical_to_fdm", hub, settings, imported);
 
   // The remap conserves mass, energy and the radial impulse of the part of the
   // profile inside the grid (its vector momentum cancels by symmetry).
@@ -333,7 +338,7 @@ HandoffRecord handoff_fdm_to_mpm(const config::Scene& scene, const AfdmpLayout& 
   const auto particle_names = field_names(
       region::kFluidParticles,
       {"id", "position", "velocity", "mass", "volume", "internal_energy", "material", "stress"});
-  const auto done = import_fields(hub, "mpm", "fdm_to_mpm", batch, particle_names,
+  const auto done = import_fields(hub, "mpm", "fdm_to_mpm", std::move(batch), particle_names,
                                   settings.max_chunk_bytes, false, settings.timeout, &imported);
 
   const double volume = grid.cell_volume();

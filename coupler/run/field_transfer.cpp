@@ -58,7 +58,7 @@ cosim::Message export_fields(cosim::Hub& hub, std::string_view peer, std::string
 }
 
 cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
-                                         std::string_view transfer_id, const cosim::Message& fields,
+                                         std::string_view transfer_id, cosim::Message fields,
                                          std::span<const std::string> names,
                                          std::uint64_t max_chunk_bytes, bool tracers,
                                          std::chrono::milliseconds timeout,
@@ -66,9 +66,9 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
   const auto start = std::chrono::steady_clock::now();
   try {
     // One chunk at a time: a whole-grid handoff holds its fields once, not twice.
-    cosim::ChunkSlicer slicer(fields, transfer_id, names, max_chunk_bytes);
     FieldTransferStats sent;
-    while (auto next = slicer.next()) {
+    for (cosim::ChunkSlicer slicer(fields, transfer_id, names, max_chunk_bytes);
+         auto next = slicer.next();) {
       cosim::Message& chunk = *next;
       const std::uint32_t index = chunk.header.field_chunk().chunk_index();
       const std::string field = chunk.header.field_chunk().field();
@@ -83,6 +83,7 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
                     "' was answered by '" + std::string(cosim::body_name(ack.header)) +
                     "', expected FieldChunkAck of chunk " + std::to_string(index));
     }
+    fields = cosim::Message{};  // the solver holds every chunk now
     cosim::Message commit;
     commit.header.mutable_field_import_commit()->set_transfer_id(std::string(transfer_id));
     commit.header.mutable_field_import_commit()->set_tracers(tracers);
