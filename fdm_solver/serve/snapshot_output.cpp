@@ -2,6 +2,7 @@
 
 #include "common/core/error.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "fdm_solver/primitive_fields.hpp"
 #include "fdm_solver/snapshot_fields.hpp"
 
 namespace mpfd::fdm {
@@ -36,20 +37,23 @@ cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double
                                    "' differs from Setup's output_dir '" + out_dir_.string() +
                                    "'; fdm_solver writes one");
   for (const auto& name : request.fields()) check_field(name, "WriteOutput");
-  primitives_.compute(solver.state(), solver.materials());
+  // Made per output, not kept: 7 values a cell a coupled run would hold between outputs.
+  PrimitiveFields primitives;
+  primitives.compute(solver.state(), solver.materials());
   const std::vector<std::string> names =
       request.fields().empty()
           ? default_fields_
           : std::vector<std::string>(request.fields().begin(), request.fields().end());
   const SnapshotFields fields(solver, names);
-  const std::vector<io::FieldView> views = fields.views(names, scene_, solver, primitives_);
+  const std::vector<io::FieldView> views = fields.views(names, scene_, solver, primitives);
   // The tracers as particles, as `fdm_solver run` writes them (docs/output.md).
   std::vector<io::FieldView> tracer_views;
+  std::vector<double> tracer_material;  // the tracers' material index as numbers
   if (const auto* tracker = solver.tracker()) {
     const TracerSet& t = tracker->tracers();
-    tracer_material_.assign(t.material.begin(), t.material.end());
+    tracer_material.assign(t.material.begin(), t.material.end());
     tracer_views = {{"position", "m", {t.position[0], t.position[1], t.position[2]}},
-                    {"material", "", {tracer_material_}},
+                    {"material", "", {tracer_material}},
                     {"volume", "m^3", {t.volume}}};
   }
   cosim::v1::OutputWritten written;

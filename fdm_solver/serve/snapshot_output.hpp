@@ -14,7 +14,6 @@
 #include "common/io/snapshot_writer.hpp"
 #include "cosim/message.hpp"
 #include "fdm_solver/euler_solver.hpp"
-#include "fdm_solver/primitive_fields.hpp"
 #include "fdm_solver/snapshot_fields.hpp"
 
 namespace mpfd::fdm {
@@ -38,8 +37,6 @@ class SnapshotOutput {
   config::Scene scene_;
   std::vector<std::string> default_fields_;
   std::optional<io::SnapshotWriter> writer_;  // made at the first write: it creates the folder
-  PrimitiveFields primitives_;
-  std::vector<double> tracer_material_;  // the tracers' material index as numbers, for output
 };
 
 }  // namespace mpfd::fdm
