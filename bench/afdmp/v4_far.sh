@@ -8,8 +8,8 @@
 #   mpm_start_<n> the same octant with AFDMP's MPM start (START=mpm or both):
 #                 the charge sampled by the octant's own particles
 # Usage: bench/afdmp/v4_far.sh OUT_DIR [CELLS ...]   (default 50 80 125, i.e.
-#   h = 25, 15.625, 10 mm; measured 3 s / 17 s / 2 min on 2 shared cores,
-#   0.10 / 0.34 / 2.2 GB with the 1D start). Env: COUPLER, MPM_SOLVER (default build/...),
+#   h = 25, 15.625, 10 mm; measured 3.5 s / 18 s / 97 s on 2 shared cores,
+#   0.07 / 0.23 / 0.85 GiB peak RSS with the 1D start, session 10). Env: COUPLER, MPM_SOLVER (default build/...),
 #   START (spherical: the scene's, the default; mpm; both),
 #   FDM_AV (solver.fdm.artificial_viscosity for the octants; default the
 #   scene's, i.e. the solver default 1), FDM_SWITCH_POWER
