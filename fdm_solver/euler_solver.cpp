@@ -559,7 +559,7 @@ void EulerSolver::import_state(EulerState cells, std::optional<TracerSet> tracer
                                const MaterialStartView& start) {
   check_grid_of(cells, "imported");
   const std::size_t count = state_.grid.cell_count();
-  const bool multi_material = tracker_.has_value();
+  const bool was_multi_material = tracker_.has_value();
   std::optional<TrackerState> next;
   std::vector<double> energy(count);
   parallel_for(count, [&](std::size_t c) { energy[c] = specific_internal_energy(cells, c); });
@@ -578,8 +578,9 @@ void EulerSolver::import_state(EulerState cells, std::optional<TracerSet> tracer
   // Nothing below throws (but for memory): the import is all or nothing. A
   // state from tracker_from_points passes the tracker's restore checks.
   if (next) {
-    if (!multi_material) allocate_multi_material();
+    // A solver of one material validates its EOS here, first: so it stays unchanged if that throws.
     tracker_.emplace(state_.grid, eos_, std::move(*next));
+    if (!was_multi_material) allocate_multi_material();
   }
   state_.u = std::move(cells.u);
   if (next) {

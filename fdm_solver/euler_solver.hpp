@@ -96,7 +96,8 @@ class EulerSolver {
   /// cells stay skipped). Throws mpfd::Error before changing anything.
   /// `cells` is taken (moved from, it becomes the state) and the old tracker
   /// is released before the new one is built from the tracker state: a
-  /// whole-grid import does not hold two trackers and two states at once.
+  /// whole-grid import does not hold two trackers and two states at once
+  /// (so running out of memory while the new one is built leaves none).
   void import_state(EulerState cells, std::optional<TracerSet> tracers,
                     const MaterialStartView& start = {});
 

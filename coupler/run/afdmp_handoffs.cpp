@@ -181,8 +181,8 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
       field_names(region::kFluidParticles,
                   {"position", "velocity", "mass", "internal_energy", "material", "burn_fraction"});
   if (settings.material_import) names.push_back(std::string(region::kFluidParticles) + "/volume");
-  const cosim::Message fields = export_fields(
-      hub, "mpm", "mpm_to_fdm", names, settings.max_chunk_bytes, settings.timeout, &exported);
+  cosim::Message fields = export_fields(hub, "mpm", "mpm_to_fdm", names, settings.max_chunk_bytes,
+                                        settings.timeout, &exported);
   const handoff::ParticleSet particles = particles_from_wire(fields, region::kFluidParticles);
   // Asked for: without it every mixed cell would fall back to the cell's state unnoticed.
   if (settings.material_import)
@@ -203,6 +203,7 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
         ") m, material " + std::to_string(particles.material[p]) +
         ", F = " + std::to_string(burn.values()[p]) + "; expected F >= 1 for every one (T §3.2.1)");
   }
+  fields = cosim::Message{};  // read: not held while the FDM builds its state
 
   const grid::UniformGrid grid = whole_grid(scene);
   const handoff::CellBox fluid_box = to_cell_box(layout.fluid_cells);

@@ -185,7 +185,7 @@ struct ImportedFields {
 /// Checks the assembled `fields` of a commit (`with_tracers`: its tracers
 /// flag) and reads them out; the fields are released on return, before the
 /// solver builds its new state from what they held.
-ImportedFields read_import(const ServedZone& zone, const cosim::Message fields,
+ImportedFields read_import(const ServedZone& zone, cosim::Message fields,
                            const std::string& transfer, bool with_tracers) {
   const CellRegion* cells_region = nullptr;
   std::vector<const TracerRegion*> tracer_regions;
@@ -224,12 +224,11 @@ ImportedFields read_import(const ServedZone& zone, const cosim::Message fields,
                             " TRACERS field");
   ImportedFields in{imported_cells(zone, fields, *cells_region, transfer),
                     imported_material_start(zone, fields, *cells_region, transfer), std::nullopt};
-  std::optional<TracerSet>& tracers = in.tracers;
   if (!tracer_regions.empty()) {
     // The tracers outside every imported box stay; those inside are replaced.
     // A box of the whole grid replaces them all: they are not read, so a
     // tracker whose seeding is pending stays unseeded (multi_material_tracker.hpp).
-    tracers.emplace();
+    in.tracers.emplace();
     const grid::UniformGrid& grid = zone.solver.state().grid;
     const ActiveBox all = whole_grid(grid);
     const bool replaces_all =
@@ -243,11 +242,11 @@ ImportedFields read_import(const ServedZone& zone, const cosim::Message fields,
         const grid::Vec3 p{kept.position[0][t], kept.position[1][t], kept.position[2][t]};
         const bool replaced = std::any_of(tracer_regions.begin(), tracer_regions.end(),
                                           [&](const TracerRegion* r) { return r->holds(grid, p); });
-        if (!replaced) tracers->add(p, kept.material[t], 0.0);
+        if (!replaced) in.tracers->add(p, kept.material[t], 0.0);
       }
     }
     for (const TracerRegion* region : tracer_regions)
-      add_imported_tracers(zone, fields, *region, transfer, *tracers);
+      add_imported_tracers(zone, fields, *region, transfer, *in.tracers);
   }
   return in;
 }
@@ -282,11 +281,10 @@ cosim::Message commit_import(ServedZone& zone, const cosim::Message& commit) {
     malformed(transfer, "no FieldChunk of this transfer arrived");
   std::optional<cosim::FieldAssembly> pending;
   pending.swap(zone.pending_import);  // consumed, whatever the outcome
+  ImportedFields in = read_import(zone, pending->take(), transfer, body.tracers());
   const double sim_time = commit.header.envelope().sim_time();
   if (!std::isfinite(sim_time))
     malformed(transfer, "the commit's envelope sim_time must be finite; it becomes the clock");
-  ImportedFields in = read_import(zone, pending->take(), transfer, body.tracers());
-  pending.reset();
   try {
     zone.solver.import_state(std::move(in.cells), std::move(in.tracers), in.start.view());
   } catch (const Error& error) {  // import_state changes nothing when it throws

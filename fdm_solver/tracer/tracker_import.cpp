@@ -89,6 +89,11 @@ TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_cou
            " energies");
   check_points(grid, points, material_count);
   check_start(start, static_cast<std::size_t>(material_count) * cells);
+  for (std::size_t c = 0; c < cells; ++c)  // as MaterialMap would, but before `accepted`
+    if (fallback_material[c] < 0 || fallback_material[c] >= material_count)
+      refuse("cell " + std::to_string(c) + " has the fallback material " +
+             std::to_string(fallback_material[c]) + ", outside [0, " +
+             std::to_string(material_count) + ")");
   // No carried volumes yet: all zero makes classify_cells take theta from the
   // tracer counts, as equal volumes per tracer would.
   points.volume.assign(points.size(), 0.0);

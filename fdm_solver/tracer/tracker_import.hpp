@@ -39,8 +39,9 @@ struct MaterialStartView {
 /// `fallback_material` (one per cell) classifies the cells only when no tracer
 /// at all lies in the grid. `start`, if not empty, is each material's own
 /// state (see above). Throws mpfd::Error naming the first tracer outside
-/// the grid or with a material outside [0, material_count), a cell holding
-/// three materials, or a size mismatch; all of these before `accepted` is
+/// the grid or with a material outside [0, material_count), a fallback
+/// material outside that range, a cell holding three materials, or a size
+/// mismatch; all of these before `accepted` is
 /// called, once, after which nothing throws but for memory (a solver
 /// releases the tracker this one replaces there: one tracker at a time).
 [[nodiscard]] TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_count,

@@ -210,6 +210,23 @@ TEST(FdmFieldImport, ImportStateThatFailsInTheTrackerChangesNothing) {
   EXPECT_EQ(target->solver.active_box().upper, box.upper);
 }
 
+TEST(FdmFieldImport, CommitWithoutAFiniteSimTimeIsRefusedAndChangesNothing) {
+  const auto source = transfer_zone();
+  const auto target = transfer_zone(false);
+  (void)stream_fields(*source, *target, "h1", kStateFields, 1 << 20);
+  const SolverImage before(target->solver);
+  try {
+    (void)commit_import(*target, commit_request("h1", true, std::nan("")));
+    FAIL() << "the commit was accepted";
+  } catch (const cosim::ProtocolError& error) {
+    EXPECT_EQ(error.code(), v1::ERROR_CODE_MALFORMED);
+    EXPECT_NE(std::string(error.what()).find("sim_time must be finite"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(SolverImage(target->solver), before);
+  EXPECT_EQ(target->solver.tracker(), nullptr);
+}
+
 TEST(FdmFieldImport, ImportStateRefusedByTheTrackerKeepsTheOldTracker) {
   // The old tracker is released before the new one is built (one tracker's
   // memory at a time), so a refusal must come before that.

@@ -105,7 +105,8 @@ TEST(TrackerImport, RefusesACellOfThreeMaterialsBeforeAcceptingThePoints) {
     FAIL() << "no error";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("cell (1, 0, 0)"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("materials 0, 1, 2"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("materials 0, 1, 2"), std::string::npos)
+        << error.what();
   }
   EXPECT_EQ(accepted, 0);  // a solver still holds its old tracker
 }
@@ -122,11 +123,22 @@ TEST(TrackerImport, AcceptsOnceAfterEveryCheckAndTheStateDoesNotDependOnIt) {
   EXPECT_EQ(with.tracers.volume, without.tracers.volume);
   EXPECT_EQ(with.states.energy, without.states.energy);
 
+  // Every refusal comes before `accepted`: a tracer outside the grid, a
+  // material start of the wrong size, a fallback material out of range.
+  const auto refused = [&](const TracerSet& p, const MaterialStartView& start,
+                           const std::vector<int>& fallback) {
+    EXPECT_THROW(
+        (void)tracker_from_points(c.g, 2, p, fallback, c.rho, c.e, start, [&] { ++accepted; }),
+        Error);
+  };
   TracerSet outside = points;
   outside.position[0][3] = -1.0;
-  EXPECT_THROW(
-      (void)tracker_from_points(c.g, 2, outside, c.fallback, c.rho, c.e, {}, [&] { ++accepted; }),
-      Error);
+  refused(outside, {}, c.fallback);
+  const std::vector<double> short_start(c.rho.size(), 0.5);  // one material's worth of two
+  refused(points, {short_start, short_start, short_start}, c.fallback);
+  std::vector<int> bad_fallback = c.fallback;
+  bad_fallback[4] = 2;
+  refused(points, {}, bad_fallback);
   EXPECT_EQ(accepted, 1);
 }
 
