@@ -3,7 +3,7 @@
 physical ranges (method fdm, mpm or cfdmp; 1D or 2D; grid size; domain size;
 a charge of TNT products or hot air: size, position, pressure; an optional
 steel plate (MPM) or water block (FDM); boundary types; CFL; MPM shape
-function), with its end time set for about STEPS steps. Each is run through
+function; FDM viscosity switch power 1 or 2), with its end time set for about STEPS steps. Each is run through
 `fdm_solver run`, `mpm_solver run` or `coupler run` under a timeout and must
 either run bounded or fail with a named error: never NaN, crash or hang.
 
@@ -111,10 +111,15 @@ def generate(seed, steps):
         scene["zones"] = {"fdm": {"lower": [0, 0, 0], "upper": [(face + w) * h, upper[1], h]},
                           "mpm": {"lower": [face * h, 0, 0], "upper": upper},
                           "handshake_width": w}
+    # Drawn last, so that every other draw of a seed is what it was before this one.
+    switch_power = rng.choice([1, 2])
+    if method in ("fdm", "cfdmp"):
+        scene["solver"]["fdm"] = {"viscosity_switch_power": switch_power}
     params = {"seed": seed, "method": method, "dim": dim, "cells": f"{nx}x{ny}",
               "length_m": round(length, 4), "cfl": cfl, "charge": charge_kind,
               "charge_pressure_pa": f"{p_charge:.3g}", "charge_radius_m": round(radius, 4),
               "extra": extra, "shape_function": shape_function if method != "fdm" else "",
+              "switch_power": switch_power if method != "mpm" else "",
               "boundaries": " ".join(boundaries[f"{a}_{s}"] for a in "xy"
                                      for s in ("lower", "upper"))}
     return scene, params, p_charge
