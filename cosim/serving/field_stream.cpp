@@ -41,18 +41,33 @@ std::vector<Message> slice_into_chunks(const Message& fields, std::string_view t
 
 ChunkSlicer::ChunkSlicer(const Message& fields, std::string_view transfer_id,
                          std::span<const std::string> names, std::uint64_t max_chunk_bytes)
-    : fields_(fields), transfer_id_(transfer_id), names_(names) {
-  for (const std::string& full : names) {
-    const auto name = split_field_name(full);
+    : borrowed_(&fields), transfer_id_(transfer_id), names_(names.begin(), names.end()) {
+  plan(max_chunk_bytes);
+}
+
+ChunkSlicer::ChunkSlicer(Message&& fields, std::string_view transfer_id,
+                         std::span<const std::string> names, std::uint64_t max_chunk_bytes)
+    : owned_(std::move(fields)), transfer_id_(transfer_id), names_(names.begin(), names.end()) {
+  plan(max_chunk_bytes);
+}
+
+void ChunkSlicer::plan(std::uint64_t max_chunk_bytes) {
+  const auto& arrays = fields().header.arrays();
+  for (auto full = names_.begin(); full != names_.end(); ++full) {
+    if (std::find(names_.begin(), full, *full) != full)
+      throw Error("field '" + *full + "' is named twice");
+    const auto name = split_field_name(*full);
     if (!name)
-      throw Error("field '" + full + "': expected '<region>/<quantity>' (proto/README.md §15)");
-    const auto& array = find_descriptor(fields, name->region, name->quantity);
+      throw Error("field '" + *full + "': expected '<region>/<quantity>' (proto/README.md §15)");
+    const auto& array = find_descriptor(fields(), name->region, name->quantity);
     std::vector<std::uint64_t> shape(array.shape().begin(), array.shape().end());
-    if (shape.empty()) throw Error("field '" + full + "' is a scalar; fields have rows");
+    if (shape.empty()) throw Error("field '" + *full + "' is a scalar; fields have rows");
     const std::uint64_t row_bytes = values_per_row(shape) * dtype_size(array.dtype());
     const std::uint64_t rows_per_chunk =
         row_bytes == 0 ? shape[0] : std::max<std::uint64_t>(max_chunk_bytes / row_bytes, 1);
-    plan_.push_back({&array, std::move(shape), row_bytes, rows_per_chunk});
+    int index = 0;  // the array's place in the header (its address does not survive a move)
+    while (&arrays[index] != &array) ++index;
+    plan_.push_back({index, std::move(shape), row_bytes, rows_per_chunk});
   }
 }
 
@@ -60,7 +75,8 @@ std::optional<Message> ChunkSlicer::next() {
   if (field_ == plan_.size()) return std::nullopt;
   const Field& f = plan_[field_];
   const std::string& name = names_[field_];
-  const zmq::message_t& frame = fields_.frames.at(f.array->frame_index());
+  const v1::ArrayDescriptor& array = fields().header.arrays(f.array);
+  const zmq::message_t& frame = fields().frames.at(array.frame_index());
   const std::uint64_t rows = std::min(f.rows_per_chunk, f.shape[0] - offset_);
   const bool field_done = offset_ + rows == f.shape[0];
   Message chunk;
@@ -77,10 +93,11 @@ std::optional<Message> ChunkSlicer::next() {
   if (rows > 0)
     std::memcpy(data.data(), static_cast<const std::byte*>(frame.data()) + offset_ * f.row_bytes,
                 rows * f.row_bytes);
-  append_frame(chunk, {transfer_id_, name, ArrayShape(chunk_shape), f.array->units()},
-               f.array->dtype(), rows * values_per_row(f.shape), std::move(data));
+  append_frame(chunk, {transfer_id_, name, ArrayShape(chunk_shape), array.units()}, array.dtype(),
+               rows * values_per_row(f.shape), std::move(data));
   offset_ += rows;
   if (field_done) {  // a field of 0 rows still sends its one chunk
+    if (owned_) owned_->frames.at(array.frame_index()) = zmq::message_t{};
     ++field_;
     offset_ = 0;
   }

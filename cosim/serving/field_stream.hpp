@@ -36,27 +36,38 @@ std::vector<Message> slice_into_chunks(const Message& fields, std::string_view t
                                        std::uint64_t max_chunk_bytes);
 
 /// The chunks of slice_into_chunks one at a time, so that a sender that sends
-/// each before making the next holds one chunk besides `fields`, not a second
-/// copy of every field. Checks every name when constructed (throws as
-/// slice_into_chunks), so that a bad name is found before any chunk is sent.
-/// `fields` and `names` must outlive the slicer.
+/// each before making the next holds one chunk besides the fields, not a
+/// second copy of every field. Checks every name when constructed (throws as
+/// slice_into_chunks, and for a field named twice), so that a bad name is
+/// found before any chunk is sent. Movable: a solver's export hands it to its
+/// serve loop.
 class ChunkSlicer {
  public:
+  /// Slices `fields`, which must outlive the slicer.
   ChunkSlicer(const Message& fields, std::string_view transfer_id,
               std::span<const std::string> names, std::uint64_t max_chunk_bytes);
+  /// Slices `fields`, which the slicer owns: each field's frame is released
+  /// once its last chunk is made, so that the sender's copy shrinks as the
+  /// chunks go (an export of a whole grid holds it about once, not twice).
+  ChunkSlicer(Message&& fields, std::string_view transfer_id, std::span<const std::string> names,
+              std::uint64_t max_chunk_bytes);
   /// The next chunk, or nothing after the one with last = true.
   [[nodiscard]] std::optional<Message> next();
 
  private:
   struct Field {
-    const v1::ArrayDescriptor* array;
+    int array;  // index into the fields' header.arrays (stable when the slicer moves)
     std::vector<std::uint64_t> shape;
     std::uint64_t row_bytes;
     std::uint64_t rows_per_chunk;
   };
-  const Message& fields_;
+  void plan(std::uint64_t max_chunk_bytes);
+  [[nodiscard]] const Message& fields() const { return owned_ ? *owned_ : *borrowed_; }
+
+  const Message* borrowed_ = nullptr;
+  std::optional<Message> owned_;
   std::string transfer_id_;
-  std::span<const std::string> names_;
+  std::vector<std::string> names_;
   std::vector<Field> plan_;
   std::size_t field_ = 0;     // the field the next chunk slices
   std::uint64_t offset_ = 0;  // its first row

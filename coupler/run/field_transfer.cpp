@@ -65,9 +65,10 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
                                          FieldTransferStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   try {
-    // One chunk at a time: a whole-grid handoff holds its fields once, not twice.
+    // One chunk at a time, each field released once sliced: a whole-grid handoff
+    // holds its fields once, not twice, and less as its chunks go.
     FieldTransferStats sent;
-    for (cosim::ChunkSlicer slicer(fields, transfer_id, names, max_chunk_bytes);
+    for (cosim::ChunkSlicer slicer(std::move(fields), transfer_id, names, max_chunk_bytes);
          auto next = slicer.next();) {
       cosim::Message& chunk = *next;
       const std::uint32_t index = chunk.header.field_chunk().chunk_index();
@@ -83,7 +84,6 @@ cosim::v1::FieldImportDone import_fields(cosim::Hub& hub, std::string_view peer,
                     "' was answered by '" + std::string(cosim::body_name(ack.header)) +
                     "', expected FieldChunkAck of chunk " + std::to_string(index));
     }
-    fields = cosim::Message{};  // the solver holds every chunk now
     cosim::Message commit;
     commit.header.mutable_field_import_commit()->set_transfer_id(std::string(transfer_id));
     commit.header.mutable_field_import_commit()->set_tracers(tracers);

@@ -46,8 +46,9 @@ struct FieldTransferStats {
 /// commit). Adds to `stats` when given. Throws mpfd::Error naming the peer,
 /// the transfer and the fields when a field is missing from `fields`, the
 /// solver refuses a chunk or the commit, goes silent for `timeout`, or
-/// answers with another message. `fields` is consumed: released after the
-/// last chunk, before the commit, when the solver builds its state.
+/// answers with another message. `fields` is consumed: each field is released
+/// once its last chunk is sent, all before the commit, when the solver builds
+/// its state.
 [[nodiscard]] cosim::v1::FieldImportDone import_fields(
     cosim::Hub& hub, std::string_view peer, std::string_view transfer_id, cosim::Message fields,
     std::span<const std::string> names, std::uint64_t max_chunk_bytes, bool tracers,

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "common/core/error.hpp"
 #include "cosim/serving/field_stream.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/region_transfer.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 }  // namespace
 
-std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message& request) {
+cosim::ChunkSlicer export_fields(ServedZone& zone, const cosim::Message& request) {
   const auto& body = request.header.field_export();
   const std::string& transfer = body.transfer_id();
   if (body.fields().empty()) refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer, "names no field");
@@ -46,7 +47,11 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
   }
   const std::uint64_t budget =
       body.max_chunk_bytes() == 0 ? cosim::kDefaultMaxChunkBytes : body.max_chunk_bytes();
-  return cosim::slice_into_chunks(fields, transfer, names, budget);
+  try {
+    return cosim::ChunkSlicer(std::move(fields), transfer, names, budget);
+  } catch (const Error& error) {
+    refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer, error.what());
+  }
 }
 
 }  // namespace mpfd::fdm

@@ -4,11 +4,11 @@
 
 #include <memory>
 #include <string_view>
-#include <vector>
 
 #include "common/core/log.hpp"
 #include "cosim/participant.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "cosim/serving/replies.hpp"
 #include "fdm_solver/serve/checkpoint.hpp"
 #include "fdm_solver/serve/exchange.hpp"
 #include "fdm_solver/serve/field_export.hpp"
@@ -45,8 +45,7 @@ cosim::v1::Hello hello(const ServeOptions& options) {
 
 /// The replies to any request but Shutdown (and Ping, which Participant
 /// answers): one, or the FieldChunks of a FieldExportRequest.
-std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
-                                   const cosim::Message& request) {
+cosim::Replies answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& request) {
   const auto& header = request.header;
   const std::string_view body = cosim::body_name(header);  // only for messages
   const bool fields =
@@ -87,9 +86,7 @@ std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
   } else {
     reply.header.mutable_activate_ack()->set_stable_dt(zone->solver.stable_dt());
   }
-  std::vector<cosim::Message> replies;
-  replies.push_back(std::move(reply));
-  return replies;
+  return reply;
 }
 
 /// Answers `request` with Error. A fatal one is sent best effort (the coupler
@@ -141,7 +138,8 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
       return;
     }
     try {
-      for (auto& reply : answer(zone, request)) participant.reply(request, std::move(reply));
+      for (auto replies = answer(zone, request); auto reply = replies.next();)
+        participant.reply(request, std::move(*reply));
     } catch (const cosim::ProtocolError& error) {
       report_error(participant, request, error.code(), error.what(), error.fatal());
     } catch (const std::exception& error) {

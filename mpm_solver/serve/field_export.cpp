@@ -54,7 +54,7 @@ std::vector<RegionExport> group_by_region(const ServedZone& zone,
 
 }  // namespace
 
-std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message& request) {
+cosim::ChunkSlicer export_fields(ServedZone& zone, const cosim::Message& request) {
   const auto& body = request.header.field_export();
   const std::vector<std::string> names(body.fields().begin(), body.fields().end());
   if (names.empty()) refuse(cosim::v1::ERROR_CODE_MALFORMED, "no field asked");
@@ -66,8 +66,8 @@ std::vector<cosim::Message> export_fields(ServedZone& zone, const cosim::Message
       else
         export_particle_region(zone.solver, *region, op, fields, zone.particle_scratch);
     }
-    return cosim::slice_into_chunks(
-        fields, body.transfer_id(), names,
+    return cosim::ChunkSlicer(
+        std::move(fields), body.transfer_id(), names,
         body.max_chunk_bytes() == 0 ? cosim::kDefaultMaxChunkBytes : body.max_chunk_bytes());
   } catch (const cosim::ProtocolError& error) {
     // An export changes nothing: every refusal leaves the zone serving.

@@ -3,11 +3,11 @@
 #include <unistd.h>
 
 #include <memory>
-#include <vector>
 
 #include "common/core/log.hpp"
 #include "cosim/participant.hpp"
 #include "cosim/serving/protocol_error.hpp"
+#include "cosim/serving/replies.hpp"
 #include "mpm_solver/serve/checkpoint.hpp"
 #include "mpm_solver/serve/exchange.hpp"
 #include "mpm_solver/serve/field_export.hpp"
@@ -46,8 +46,7 @@ void require_awake(const ServedZone& zone, std::string_view body) {
 
 /// The replies to any request but Shutdown (and Ping, which Participant
 /// answers): one, or the FieldChunks of a FieldExportRequest.
-std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
-                                   const cosim::Message& request) {
+cosim::Replies answer(std::unique_ptr<ServedZone>& zone, const cosim::Message& request) {
   const auto& header = request.header;
   const std::string_view body = cosim::body_name(header);
   if (!header.has_setup() && !header.has_exchange() && !header.has_write_output() &&
@@ -60,8 +59,7 @@ std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
         cosim::v1::ERROR_CODE_UNEXPECTED,
         zone ? "a second Setup" : "'" + std::string(body) + "' before Setup");
   if (header.has_field_export()) return export_fields(*zone, request);
-  std::vector<cosim::Message> replies(1);
-  cosim::Message& reply = replies.front();
+  cosim::Message reply;
   if (header.has_setup()) {
     zone = set_up_zone(header.setup());
     *reply.header.mutable_setup_ack() = setup_ack(header.setup(), *zone);
@@ -93,7 +91,7 @@ std::vector<cosim::Message> answer(std::unique_ptr<ServedZone>& zone,
   } else {
     *reply.header.mutable_restored() = restore_checkpoint(*zone, header.restore());
   }
-  return replies;
+  return reply;
 }
 
 /// Answers `request` with Error. A fatal one is sent best effort (the coupler
@@ -145,7 +143,8 @@ void serve(zmq::context_t& context, const ServeOptions& options) {
       return;
     }
     try {
-      for (auto& reply : answer(zone, request)) participant.reply(request, std::move(reply));
+      for (auto replies = answer(zone, request); auto reply = replies.next();)
+        participant.reply(request, std::move(*reply));
     } catch (const cosim::ProtocolError& error) {
       report_error(participant, request, error.code(), error.what(), error.fatal());
     } catch (const std::exception& error) {

@@ -120,6 +120,79 @@ TEST(FieldStream, TheSlicerMakesOneChunkPerCallAndThenNothing) {
   EXPECT_EQ(values(back, "cells", "momentum"), values(fields, "cells", "momentum"));
 }
 
+/// A frame's buffer that says when the frame lets it go.
+struct WatchedBuffer {
+  std::vector<double> values;
+  bool* freed;
+};
+
+void release_watched(void* /*data*/, void* hint) {
+  auto* buffer = static_cast<WatchedBuffer*>(hint);
+  *buffer->freed = true;
+  delete buffer;
+}
+
+/// Appends field "cells/<quantity>" of `rows` values whose buffer sets `freed` when released.
+void add_watched_field(Message& message, const std::string& quantity, std::size_t rows,
+                       bool& freed) {
+  auto* buffer = new WatchedBuffer{std::vector<double>(rows, 2.5), &freed};
+  zmq::message_t frame(buffer->values.data(), rows * sizeof(double), release_watched, buffer);
+  append_frame(message, {"cells", quantity, {rows}, "Pa"}, v1::DTYPE_F64, rows, std::move(frame));
+}
+
+TEST(FieldStream, AnOwningSlicerFreesEachFieldOnceItsLastChunkIsMade) {
+  bool p_freed = false;
+  bool q_freed = false;
+  Message fields;
+  add_watched_field(fields, "p", 4, p_freed);
+  add_watched_field(fields, "q", 4, q_freed);
+  const std::vector<std::string> names = {"cells/p", "cells/q"};
+  ChunkSlicer slicer(std::move(fields), "w", names, 2 * sizeof(double));  // 2 chunks a field
+  FieldAssembly assembly("w");
+  const auto take = [&] {
+    auto chunk = slicer.next();
+    ASSERT_TRUE(chunk.has_value());
+    assembly.add(*chunk);
+  };
+  take();
+  EXPECT_FALSE(p_freed) << "p freed before its last chunk";
+  take();
+  EXPECT_TRUE(p_freed) << "p kept after its last chunk";
+  EXPECT_FALSE(q_freed);
+  ChunkSlicer moved = std::move(slicer);  // as an export hands its slicer to the serve loop
+  while (auto chunk = moved.next()) assembly.add(*chunk);
+  EXPECT_TRUE(q_freed);
+  const Message back = assembly.take();
+  EXPECT_EQ(values(back, "cells", "q"), std::vector<double>(4, 2.5));
+}
+
+TEST(FieldStream, AnOwningSlicerCutsTheSameChunksAsABorrowingOne) {
+  const Message fields = region_fields(7);
+  const auto borrowed = slice_into_chunks(fields, "o", kNames, 5 * sizeof(double));
+  ChunkSlicer owning(region_fields(7), "o", kNames, 5 * sizeof(double));
+  std::size_t i = 0;
+  while (auto chunk = owning.next()) {
+    ASSERT_LT(i, borrowed.size());
+    EXPECT_EQ(chunk->header.SerializeAsString(), borrowed[i].header.SerializeAsString()) << i;
+    ASSERT_EQ(chunk->frames.size(), 1U);
+    EXPECT_EQ(chunk->frames[0], borrowed[i].frames[0]) << "chunk " << i;
+    ++i;
+  }
+  EXPECT_EQ(i, borrowed.size());
+}
+
+TEST(FieldStream, AFieldNamedTwiceIsRefusedBeforeAnyChunk) {
+  const Message fields = region_fields(3);
+  const std::vector<std::string> names = {"cells/rho", "cells/momentum", "cells/rho"};
+  try {
+    (void)ChunkSlicer(fields, "t9", names, 64);
+    FAIL() << "a field named twice was sliced";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("'cells/rho' is named twice"), std::string::npos)
+        << error.what();
+  }
+}
+
 /// The MALFORMED message of adding `chunks` in order, or "" if none threw.
 std::string first_malformed(const std::string& transfer, const std::vector<Message>& chunks) {
   FieldAssembly assembly(transfer);

@@ -28,7 +28,7 @@ TEST(FdmFieldExport, FieldExport_EqualsExportRegionBitForBit_ForChunkSizes_1Row_
   // 1 byte: one row per chunk; 1000: an odd number of rows of every field; 1 GiB: one chunk each.
   for (const std::uint64_t budget :
        {std::uint64_t{1}, std::uint64_t{1000}, std::uint64_t{1} << 30}) {
-    const auto chunks = export_fields(*zone, export_request("t", fields, budget));
+    const auto chunks = export_chunks(*zone, export_request("t", fields, budget));
     cosim::FieldAssembly assembly("t");
     for (const auto& chunk : chunks) assembly.add(chunk);
     ASSERT_TRUE(assembly.complete()) << budget;
@@ -147,6 +147,19 @@ TEST(FdmFieldExport, AnUnknownQuantityIsARefusalThatIsNotFatal) {
     EXPECT_EQ(error.code(), v1::ERROR_CODE_UNKNOWN_REGION);
     EXPECT_FALSE(error.fatal());
     EXPECT_NE(std::string(error.what()).find("nonsense"), std::string::npos) << error.what();
+  }
+}
+
+TEST(FdmFieldExport, AFieldAskedTwiceIsAMalformedRefusalThatIsNotFatal) {
+  const auto zone = transfer_zone();
+  try {
+    (void)export_fields(*zone, export_request("t", {"all_cells/rho", "all_cells/rho"}, 64));
+    FAIL() << "no refusal";
+  } catch (const cosim::ProtocolError& error) {
+    EXPECT_EQ(error.code(), v1::ERROR_CODE_MALFORMED);
+    EXPECT_FALSE(error.fatal());
+    EXPECT_NE(std::string(error.what()).find("'all_cells/rho' is named twice"), std::string::npos)
+        << error.what();
   }
 }
 

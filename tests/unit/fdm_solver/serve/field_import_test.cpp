@@ -178,7 +178,7 @@ TEST(FdmFieldImport, Commit_WithoutE_IsMalformedAndLeavesStateUntouched) {
 TEST(FdmFieldImport, Commit_RefusesATracerOfAMaterialTheSceneLacks_StateUntouched) {
   const auto source = transfer_zone();
   const auto target = transfer_zone(false);
-  auto chunks = export_fields(*source, export_request("h1", kStateFields, 1 << 20));
+  auto chunks = export_chunks(*source, export_request("h1", kStateFields, 1 << 20));
   // The material chunk is the last; make its first tracer material 7.
   auto& material = chunks.back();
   ASSERT_EQ(material.header.field_chunk().field(), "all_tracers/material");
@@ -299,7 +299,7 @@ TEST(FdmFieldImport, TracersInsideTheImportedBoxAreReplaced_TheOthersKept) {
 TEST(FdmFieldImport, AChunkOfANewTransferDropsTheUnfinishedOne) {
   const auto source = transfer_zone();
   const auto target = transfer_zone(false);
-  auto old_chunks = export_fields(*source, export_request("old", kStateFields, 1000));
+  auto old_chunks = export_chunks(*source, export_request("old", kStateFields, 1000));
   (void)add_import_chunk(*target, old_chunks.front());
   (void)stream_fields(*source, *target, "new", kStateFields, 1 << 20);
   EXPECT_THROW((void)commit_import(*target, commit_request("old", true, 0.0)),

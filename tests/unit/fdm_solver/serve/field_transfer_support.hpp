@@ -70,12 +70,21 @@ inline std::vector<std::byte> bytes_of(const cosim::Message& message, const std:
   return bytes;
 }
 
+/// Every chunk of `zone`'s answer to the FieldExportRequest `request`, cut at
+/// once (the serve loop cuts each as it sends the one before).
+inline std::vector<cosim::Message> export_chunks(ServedZone& zone, const cosim::Message& request) {
+  auto slicer = export_fields(zone, request);
+  std::vector<cosim::Message> chunks;
+  while (auto chunk = slicer.next()) chunks.push_back(std::move(*chunk));
+  return chunks;
+}
+
 /// Exports `fields` from `from` in chunks of `max_chunk_bytes` and feeds every
 /// chunk to `to`'s pending import; returns the chunk count.
 inline std::size_t stream_fields(ServedZone& from, ServedZone& to, const std::string& transfer,
                                  const std::vector<std::string>& fields,
                                  std::uint64_t max_chunk_bytes) {
-  const auto chunks = export_fields(from, export_request(transfer, fields, max_chunk_bytes));
+  const auto chunks = export_chunks(from, export_request(transfer, fields, max_chunk_bytes));
   for (const auto& chunk : chunks) (void)add_import_chunk(to, chunk);
   return chunks.size();
 }
