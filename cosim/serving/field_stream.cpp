@@ -72,7 +72,7 @@ void ChunkSlicer::plan(std::uint64_t max_chunk_bytes) {
 }
 
 std::optional<Message> ChunkSlicer::next() {
-  if (field_ == plan_.size()) return std::nullopt;
+  if (field_ >= plan_.size()) return std::nullopt;  // done, or moved from
   const Field& f = plan_[field_];
   const std::string& name = names_[field_];
   const v1::ArrayDescriptor& array = fields().header.arrays(f.array);

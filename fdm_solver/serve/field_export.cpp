@@ -1,8 +1,8 @@
 #include "fdm_solver/serve/field_export.hpp"
 
+#include <algorithm>
 #include <string>
 
-#include "common/core/error.hpp"
 #include "cosim/serving/field_stream.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "fdm_solver/serve/region_transfer.hpp"
@@ -23,7 +23,10 @@ cosim::ChunkSlicer export_fields(ServedZone& zone, const cosim::Message& request
   if (body.fields().empty()) refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer, "names no field");
   const std::vector<std::string> names(body.fields().begin(), body.fields().end());
   cosim::Message fields;
-  for (const std::string& name : names) {
+  for (auto asked = names.begin(); asked != names.end(); ++asked) {
+    const std::string& name = *asked;
+    if (std::find(names.begin(), asked, name) != asked)
+      refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer, "field '" + name + "' is named twice");
     const auto parts = cosim::split_field_name(name);
     if (!parts)
       refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer,
@@ -47,11 +50,7 @@ cosim::ChunkSlicer export_fields(ServedZone& zone, const cosim::Message& request
   }
   const std::uint64_t budget =
       body.max_chunk_bytes() == 0 ? cosim::kDefaultMaxChunkBytes : body.max_chunk_bytes();
-  try {
-    return cosim::ChunkSlicer(std::move(fields), transfer, names, budget);
-  } catch (const Error& error) {
-    refuse(cosim::v1::ERROR_CODE_MALFORMED, transfer, error.what());
-  }
+  return cosim::ChunkSlicer(std::move(fields), transfer, names, budget);
 }
 
 }  // namespace mpfd::fdm

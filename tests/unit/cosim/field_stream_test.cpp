@@ -154,9 +154,9 @@ TEST(FieldStream, AnOwningSlicerFreesEachFieldOnceItsLastChunkIsMade) {
     ASSERT_TRUE(chunk.has_value());
     assembly.add(*chunk);
   };
-  take();
+  ASSERT_NO_FATAL_FAILURE(take());
   EXPECT_FALSE(p_freed) << "p freed before its last chunk";
-  take();
+  ASSERT_NO_FATAL_FAILURE(take());
   EXPECT_TRUE(p_freed) << "p kept after its last chunk";
   EXPECT_FALSE(q_freed);
   ChunkSlicer moved = std::move(slicer);  // as an export hands its slicer to the serve loop
