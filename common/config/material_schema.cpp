@@ -5,18 +5,14 @@
 namespace mpfd::config::schema {
 namespace {
 
-template <class T>
-std::shared_ptr<Table<T>> table(std::string title, std::string doc) {
-  return std::make_shared<Table<T>>(std::move(title), std::move(doc));
-}
-
 const Number kDensity{"kg/m^3", Range::above(0)};
 const Number kPositive{"-", Range::above(0)};
 const Number kNonNegative{"-", Range::at_least(0)};
 const Number kAny{"-"};
 
 std::shared_ptr<const Table<eos::IdealGas>> ideal_gas() {
-  auto t = table<eos::IdealGas>("eos: ideal_gas", "Ideal gas, T (2-59): p = (gamma - 1) rho e.");
+  auto t =
+      make_table<eos::IdealGas>("eos: ideal_gas", "Ideal gas, T (2-59): p = (gamma - 1) rho e.");
   t->required("gamma", &eos::IdealGas::gamma, Number("-", Range::above(1)),
               "ratio of specific heats");
   return t;
@@ -24,7 +20,7 @@ std::shared_ptr<const Table<eos::IdealGas>> ideal_gas() {
 
 std::shared_ptr<const Table<eos::Jwl>> jwl() {
   using eos::Jwl;
-  auto t = table<Jwl>("eos: jwl", "Jones-Wilkins-Lee detonation products, T (2-60).");
+  auto t = make_table<Jwl>("eos: jwl", "Jones-Wilkins-Lee detonation products, T (2-60).");
   t->required("rho0", &Jwl::rho0, kDensity, "density of the unreacted explosive")
       .required("A", &Jwl::a, Number("Pa", Range::above(0)), "coefficient of the R1 term")
       .required("B", &Jwl::b, Number("Pa", Range::at_least(0)), "coefficient of the R2 term")
@@ -44,8 +40,8 @@ std::shared_ptr<const Table<eos::Jwl>> jwl() {
 
 std::shared_ptr<const Table<eos::MieGruneisen>> mie_gruneisen() {
   using eos::MieGruneisen;
-  auto t = table<MieGruneisen>("eos: mie_gruneisen",
-                               "Mie-Grueneisen with a linear Us-up Hugoniot, T (2-65), (2-66).");
+  auto t = make_table<MieGruneisen>(
+      "eos: mie_gruneisen", "Mie-Grueneisen with a linear Us-up Hugoniot, T (2-65), (2-66).");
   t->required("rho0", &MieGruneisen::rho0, kDensity, "reference density")
       .required("C0", &MieGruneisen::c0, Number("m/s", Range::above(0)),
                 "bulk sound speed (intercept of Us-up)")
@@ -56,7 +52,8 @@ std::shared_ptr<const Table<eos::MieGruneisen>> mie_gruneisen() {
 
 std::shared_ptr<const Table<eos::Polynomial>> polynomial() {
   using eos::Polynomial;
-  auto t = table<Polynomial>("eos: polynomial",
+  auto t =
+      make_table<Polynomial>("eos: polynomial",
                              "Polynomial EOS (AUTODYN form), mu = rho/rho0 - 1; see "
                              "common/eos/polynomial.hpp. Water: rho0 1000, A1 2.2e9, A2 9.54e9, "
                              "A3 1.457e10, B0 = B1 = 0.28, T1 2.2e9.");
@@ -73,14 +70,14 @@ std::shared_ptr<const Table<eos::Polynomial>> polynomial() {
 }
 
 std::shared_ptr<const Table<ElasticStrength>> elastic() {
-  auto t = table<ElasticStrength>("strength: elastic", "Linear elastic deviatoric response.");
+  auto t = make_table<ElasticStrength>("strength: elastic", "Linear elastic deviatoric response.");
   t->required("shear_modulus", &ElasticStrength::shear_modulus, Number("Pa", Range::above(0)),
               "shear modulus G");
   return t;
 }
 
 std::shared_ptr<const Table<JohnsonCook>> johnson_cook() {
-  auto t = table<JohnsonCook>(
+  auto t = make_table<JohnsonCook>(
       "strength: johnson_cook",
       "Johnson-Cook flow stress, T (2-64): (A + B eps_p^n)(1 + C ln(epsdot/epsdot0))(1 - T*^m).");
   const Number pascals{"Pa", Range::at_least(0)};
@@ -111,8 +108,8 @@ std::shared_ptr<const Table<JohnsonCook>> johnson_cook() {
 }
 
 std::shared_ptr<const Table<Explosive>> explosive() {
-  auto t = table<Explosive>("materials.<name>.explosive",
-                            "Present for a material that detonates (charges must use one).");
+  auto t = make_table<Explosive>("materials.<name>.explosive",
+                                 "Present for a material that detonates (charges must use one).");
   t->required("detonation_velocity", &Explosive::detonation_velocity,
               Number("m/s", Range::above(0)), "D of the program burn, T (3-1)");
   return t;
@@ -128,14 +125,15 @@ std::shared_ptr<const Table<Material>> material_table() {
         .add("mie_gruneisen", mie_gruneisen())
         .add("polynomial", polynomial());
     Choice<AnyStrength> strength("materials.<name>.strength", "Deviatoric strength model.");
-    strength.add<NoStrength>("none", table<NoStrength>("strength: none", "No strength (fluids)."))
+    strength
+        .add<NoStrength>("none", make_table<NoStrength>("strength: none", "No strength (fluids)."))
         .add("elastic", elastic())
         .add("johnson_cook", johnson_cook())
         .planned("drucker_prager")
         .planned("hjc")
         .planned("jh2")
         .planned("rht");
-    auto t = table<Material>("materials.<name>", "One material, named by its key.");
+    auto t = make_table<Material>("materials.<name>", "One material, named by its key.");
     t->required("eos", &Material::eos, eos, "equation of state")
         .optional("strength", &Material::strength, strength, "strength model")
         .optional("explosive", &Material::explosive, Nested<Explosive>(explosive()),

@@ -72,7 +72,7 @@ void check_fsi_zone(const Scene& s, const MpmZone& zone, Diagnostics& d) {
                 std::to_string(inner.size()) + (inner.empty() ? "" : ": " + join(inner)));
 }
 
-void check_regions(const Scene& s, Diagnostics& d) {
+void check_afdmp_regions(const Scene& s, Diagnostics& d) {
   const std::optional<MpmZone>& zone = s.zones ? s.zones->mpm : std::nullopt;
   for (std::size_t i = 0; i < s.charges.size(); ++i) {
     if (zone && overlap(s.domain, bounding_box(s.charges[i].shape), zone->lower, zone->upper))
@@ -206,7 +206,7 @@ void check_afdmp(const Scene& s, Diagnostics& d) {
               "not with an FSI zone under afdmp: the MPM refuses coupler particles with "
               "contact (MpmSolver::refuse_unsupported_coupling)");
   }
-  check_regions(s, d);
+  check_afdmp_regions(s, d);
   if (s.solver.afdmp.start == AfdmpStart::spherical) check_spherical_start(s, d);
 }
 

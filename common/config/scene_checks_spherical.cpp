@@ -42,7 +42,7 @@ void check_line(const Scene& s, Diagnostics& d) {
 
 // Each region must be a sphere about the origin with its radius on a grid line,
 // all with the same particle count: they become the layers of one radial line.
-void check_regions(const Scene& s, Diagnostics& d) {
+void check_spherical_regions(const Scene& s, Diagnostics& d) {
   const double h = cell_size(s.domain, 0);
   int particles = 0;
   std::string first;
@@ -92,7 +92,7 @@ void check_regions(const Scene& s, Diagnostics& d) {
 void check_spherical_geometry(const Scene& s, Diagnostics& d) {
   if (s.domain.geometry != Geometry::spherical) return;
   check_line(s, d);
-  if (d.clean("bodies") && d.clean("charges")) check_regions(s, d);
+  if (d.clean("bodies") && d.clean("charges")) check_spherical_regions(s, d);
 }
 
 }  // namespace mpfd::config

@@ -6,16 +6,11 @@
 namespace mpfd::config::schema {
 namespace {
 
-template <class T>
-std::shared_ptr<Table<T>> table(std::string title, std::string doc) {
-  return std::make_shared<Table<T>>(std::move(title), std::move(doc));
-}
-
 const Fixed<Number, 3> kPoint{Number("m")};
 const Integer kParticlesPerAxis{Range::closed(1, 8)};
 
 std::shared_ptr<const Table<TimeControl>> time_table() {
-  auto t = table<TimeControl>("time", "When the run ends and how big its steps may be.");
+  auto t = make_table<TimeControl>("time", "When the run ends and how big its steps may be.");
   t->required("end", &TimeControl::end, Number("s", Range::above(0)), "end time")
       .optional("cfl", &TimeControl::cfl, Number("-", Range::open_closed(0, 1)),
                 "Courant number of both solvers; absent: 0.5 for the FDM, 0.2 for the MPM "
@@ -26,7 +21,8 @@ std::shared_ptr<const Table<TimeControl>> time_table() {
 }
 
 std::shared_ptr<const Table<Domain>> domain_table() {
-  auto t = table<Domain>("domain",
+  auto t =
+      make_table<Domain>("domain",
                          "The box that holds everything, and its uniform grid (cell size "
                          "(upper - lower) / cells). A 1D or 2D scene has one cell on its unused "
                          "axes.");
@@ -48,12 +44,12 @@ std::shared_ptr<const Table<Domain>> domain_table() {
 }
 
 std::shared_ptr<const Table<Zones>> zones_table() {
-  auto fdm = table<Zone>("zones.fdm", "The FDM (Euler) zone.");
+  auto fdm = make_table<Zone>("zones.fdm", "The FDM (Euler) zone.");
   fdm->required("lower", &Zone::lower, kPoint, "lowest corner, on a grid line")
       .required("upper", &Zone::upper, kPoint, "highest corner, on a grid line")
       .rule("upper > lower on every axis",
             [](const Zone& z, const Cursor& c) { check_box(z.lower, z.upper, c); });
-  auto mpm = table<MpmZone>("zones.mpm", "The MPM (fluid-structure interaction) zone.");
+  auto mpm = make_table<MpmZone>("zones.mpm", "The MPM (fluid-structure interaction) zone.");
   mpm->required("lower", &MpmZone::lower, kPoint, "lowest corner, on a grid line")
       .required("upper", &MpmZone::upper, kPoint, "highest corner, on a grid line")
       .optional("activation_pressure", &MpmZone::activation_pressure,
@@ -64,7 +60,8 @@ std::shared_ptr<const Table<Zones>> zones_table() {
                 "absent: active from the start (docs/coupler.md)")
       .rule("upper > lower on every axis",
             [](const MpmZone& z, const Cursor& c) { check_box(z.lower, z.upper, c); });
-  auto t = table<Zones>("zones",
+  auto t =
+      make_table<Zones>("zones",
                         "Where each solver works when they are coupled in space (CFDMP, T §4.2). "
                         "Used only by solver.method cfdmp (both zones required) and afdmp (mpm "
                         "zone only: the FSI zone, a slab across the domain with one face inside "
@@ -109,16 +106,17 @@ void add_state_keys(Table<T>& t, Get state) {
 }
 
 std::shared_ptr<const Table<MaterialState>> initial_table() {
-  auto t = table<MaterialState>("initial", "The background state that fills the whole domain.");
+  auto t =
+      make_table<MaterialState>("initial", "The background state that fills the whole domain.");
   add_state_keys(
       *t, [](auto& s) -> auto& { return s; });
   return t;
 }
 
 std::shared_ptr<const Table<Body>> body_table() {
-  auto t = table<Body>("bodies[]",
-                       "A region filled with one material, over the background and the bodies "
-                       "before it.");
+  auto t = make_table<Body>("bodies[]",
+                            "A region filled with one material, over the background and the bodies "
+                            "before it.");
   t->required("name", &Body::name, Name{}, "unique among bodies and charges")
       .required("shape", &Body::shape, ShapeType{}, "the region");
   add_state_keys(
@@ -134,8 +132,8 @@ std::shared_ptr<const Table<Body>> body_table() {
 }
 
 std::shared_ptr<const Table<Charge>> charge_table() {
-  auto t = table<Charge>("charges[]",
-                         "Unreacted explosive at its material's rho0, filled over the bodies.");
+  auto t = make_table<Charge>(
+      "charges[]", "Unreacted explosive at its material's rho0, filled over the bodies.");
   t->required("name", &Charge::name, Name{}, "unique among bodies and charges")
       .required("material", &Charge::material, Name{}, "a material with an `explosive` section")
       .required("shape", &Charge::shape, ShapeType{}, "the region")
@@ -152,7 +150,8 @@ std::shared_ptr<const Table<Charge>> charge_table() {
 }
 
 std::shared_ptr<const Table<Boundaries>> boundaries_table() {
-  auto t = table<Boundaries>("boundaries",
+  auto t =
+      make_table<Boundaries>("boundaries",
                              "The condition on each face of the domain. outflow: zero-gradient, "
                              "open; wall: rigid, reflecting; symmetry: mirror plane; "
                              "non_reflecting (solver.method mpm only): open, with the viscous "
@@ -174,7 +173,7 @@ std::shared_ptr<const Table<Boundaries>> boundaries_table() {
 }
 
 std::shared_ptr<const Table<Gauge>> gauge_table() {
-  auto t = table<Gauge>("gauges[]", "A named point whose history is recorded.");
+  auto t = make_table<Gauge>("gauges[]", "A named point whose history is recorded.");
   t->required("name", &Gauge::name, Name{}, "unique among gauges")
       .required("position", &Gauge::position, kPoint, "inside the domain")
       .optional(
@@ -190,7 +189,7 @@ std::shared_ptr<const Table<Gauge>> gauge_table() {
 }
 
 std::shared_ptr<const Table<Output>> output_table() {
-  auto t = table<Output>("output", "What is written and how often.");
+  auto t = make_table<Output>("output", "What is written and how often.");
   const Enum<Field> field({{"density", Field::density},
                            {"velocity", Field::velocity},
                            {"pressure", Field::pressure},
@@ -209,7 +208,7 @@ std::shared_ptr<const Table<Output>> output_table() {
 }
 
 std::shared_ptr<const Table<Solver>> solver_table() {
-  auto fdm = table<FdmOptions>("solver.fdm", "Options of the Euler solver (T §2.2).");
+  auto fdm = make_table<FdmOptions>("solver.fdm", "Options of the Euler solver (T §2.2).");
   fdm->optional("artificial_viscosity", &FdmOptions::artificial_viscosity,
                 Number("-", Range::at_least(0)),
                 "coefficient of the adaptive artificial viscosity, T (2-56)-(2-58)");
@@ -221,7 +220,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
   fdm->optional("tracers_per_axis", &FdmOptions::tracers_per_axis, Integer(Range::closed(1, 8)),
                 "massless tracers per cell along each active axis, seeded when the scene has "
                 "more than one material in the FDM zone, T §3.2.2");
-  auto contact = table<MpmContact>(
+  auto contact = make_table<MpmContact>(
       "solver.mpm.contact",
       "Bardenhagen's contact, T §2.1.3: every body and charge gets its own velocity field where "
       "two or more meet; they may slide (Coulomb friction) and separate, not interpenetrate.");
@@ -232,7 +231,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
                 "the body or charge whose surface gives the common normal, T (2-24); absent: "
                 "fixed bodies first, then the largest rho c^2 at the start, then the first "
                 "listed");
-  auto mpm = table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
+  auto mpm = make_table<MpmOptions>("solver.mpm", "Options of the MPM solver (T §2.1).");
   mpm->optional(
          "shape_function", &MpmOptions::shape_function,
          Enum<ShapeFunction>({{"linear", ShapeFunction::linear},
@@ -277,7 +276,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
       .optional("contact", &MpmOptions::contact, Nested<MpmContact>(contact),
                 "multi-velocity-field contact between the bodies; absent: one velocity field "
                 "(no-slip)");
-  auto spherical = table<AfdmpSpherical>(
+  auto spherical = make_table<AfdmpSpherical>(
       "solver.afdmp.spherical",
       "The 1D spherical detonation stage of start: spherical (S): the charge detonates in the "
       "1D spherical MPM until its shock front reaches handoff_radius, then its radial profiles "
@@ -302,7 +301,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
       .optional("cfl", &AfdmpSpherical::cfl, Number("-", Range::open_closed(0, 1)),
                 "Courant number of the 1D stage (strong blasts need <= 0.2, "
                 "mpm_solver/spherical/README.md)");
-  auto afdmp = table<AfdmpOptions>("solver.afdmp", "Options of AFDMP (T §3.2).");
+  auto afdmp = make_table<AfdmpOptions>("solver.afdmp", "Options of AFDMP (T §3.2).");
   afdmp
       ->optional("start", &AfdmpOptions::start,
                  Enum<AfdmpStart>({{"mpm", AfdmpStart::mpm}, {"spherical", AfdmpStart::spherical}}),
@@ -310,7 +309,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
                  "1D spherical MPM remapped onto the FDM grid (S; T §4.4.3)")
       .optional("spherical", &AfdmpOptions::spherical, Nested<AfdmpSpherical>(spherical),
                 "the 1D stage of start: spherical");
-  auto t = table<Solver>("solver", "Which method runs the scene, and its options.");
+  auto t = make_table<Solver>("solver", "Which method runs the scene, and its options.");
   t->optional("method", &Solver::method,
               Enum<Method>({{"fdm", Method::fdm},
                             {"mpm", Method::mpm},
@@ -325,7 +324,7 @@ std::shared_ptr<const Table<Solver>> solver_table() {
 }
 
 std::shared_ptr<const Table<Scene>> build_scene_table() {
-  auto t = table<Scene>("scene", "The top level of a scene file.");
+  auto t = make_table<Scene>("scene", "The top level of a scene file.");
   t->required("name", &Scene::name, Name{}, "names the run's output files")
       .required("time", &Scene::time, Nested<TimeControl>(time_table()), "time control")
       .required("domain", &Scene::domain, Nested<Domain>(domain_table()), "domain and grid")

@@ -127,6 +127,12 @@ class Table {
   TableDoc doc_;
 };
 
+/// A new table titled `title` with the reference text `doc`, to be filled by the caller.
+template <class T>
+std::shared_ptr<Table<T>> make_table(std::string title, std::string doc) {
+  return std::make_shared<Table<T>>(std::move(title), std::move(doc));
+}
+
 /// A nested map read by its own table.
 template <class T>
 class Nested {

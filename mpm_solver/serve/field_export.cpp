@@ -11,7 +11,7 @@
 namespace mpfd::mpm {
 namespace {
 
-[[noreturn]] void refuse(cosim::v1::ErrorCode code, const std::string& what) {
+[[noreturn]] void refuse_export(cosim::v1::ErrorCode code, const std::string& what) {
   throw cosim::ProtocolError(code, "FieldExportRequest: " + what, false);
 }
 
@@ -28,10 +28,10 @@ std::vector<RegionExport> group_by_region(const ServedZone& zone,
   for (const auto& field : request.fields()) {
     const auto parts = cosim::split_field_name(field);
     if (!parts)
-      refuse(cosim::v1::ERROR_CODE_MALFORMED,
-             "field '" + field + "': expected '<region>/<quantity>' (proto/README.md §15)");
+      refuse_export(cosim::v1::ERROR_CODE_MALFORMED,
+                    "field '" + field + "': expected '<region>/<quantity>' (proto/README.md §15)");
     if (std::find(seen.begin(), seen.end(), field) != seen.end())
-      refuse(cosim::v1::ERROR_CODE_MALFORMED, "field '" + field + "' is asked twice");
+      refuse_export(cosim::v1::ERROR_CODE_MALFORMED, "field '" + field + "' is asked twice");
     seen.push_back(field);
     const std::string name(parts->region);
     const ZoneRegion* region = nullptr;
@@ -57,7 +57,7 @@ std::vector<RegionExport> group_by_region(const ServedZone& zone,
 cosim::ChunkSlicer export_fields(ServedZone& zone, const cosim::Message& request) {
   const auto& body = request.header.field_export();
   const std::vector<std::string> names(body.fields().begin(), body.fields().end());
-  if (names.empty()) refuse(cosim::v1::ERROR_CODE_MALFORMED, "no field asked");
+  if (names.empty()) refuse_export(cosim::v1::ERROR_CODE_MALFORMED, "no field asked");
   cosim::Message fields;
   try {
     for (const auto& [region, op] : group_by_region(zone, body)) {
@@ -73,7 +73,7 @@ cosim::ChunkSlicer export_fields(ServedZone& zone, const cosim::Message& request
     // An export changes nothing: every refusal leaves the zone serving.
     throw cosim::ProtocolError(error.code(), error.what(), false);
   } catch (const Error& error) {
-    refuse(cosim::v1::ERROR_CODE_MALFORMED, error.what());
+    refuse_export(cosim::v1::ERROR_CODE_MALFORMED, error.what());
   }
 }
 

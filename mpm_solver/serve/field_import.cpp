@@ -17,7 +17,7 @@ namespace {
 constexpr std::array<std::string_view, 8> kImported = {
     "id", "position", "velocity", "mass", "volume", "internal_energy", "material", "stress"};
 
-[[noreturn]] void refuse(cosim::v1::ErrorCode code, const std::string& what) {
+[[noreturn]] void refuse_import(cosim::v1::ErrorCode code, const std::string& what) {
   throw cosim::ProtocolError(code, "FieldImportCommit: " + what, false);
 }
 
@@ -34,18 +34,19 @@ std::vector<const ZoneRegion*> imported_regions(const ServedZone& zone,
       throw cosim::ProtocolError(error.code(), error.what(), false);
     }
     if (region->kind != cosim::v1::REGION_KIND_PARTICLES)
-      refuse(cosim::v1::ERROR_CODE_UNEXPECTED,
-             "field '" + field +
-                 "': only PARTICLES regions of an MPM zone import (NODES regions export only)");
+      refuse_import(
+          cosim::v1::ERROR_CODE_UNEXPECTED,
+          "field '" + field +
+              "': only PARTICLES regions of an MPM zone import (NODES regions export only)");
     if (std::find(kImported.begin(), kImported.end(), array.name()) == kImported.end())
-      refuse(cosim::v1::ERROR_CODE_MALFORMED,
-             "field '" + field +
-                 "': a PARTICLES import carries id, position, velocity, mass, volume, "
-                 "internal_energy, material and optionally stress");
+      refuse_import(cosim::v1::ERROR_CODE_MALFORMED,
+                    "field '" + field +
+                        "': a PARTICLES import carries id, position, velocity, mass, volume, "
+                        "internal_energy, material and optionally stress");
     if (!region->declares(array.name()))
-      refuse(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
-             "field '" + field + "': quantity not declared for region '" + region->name +
-                 "' in Setup (proto/README.md §15 rule 1)");
+      refuse_import(cosim::v1::ERROR_CODE_UNKNOWN_REGION,
+                    "field '" + field + "': quantity not declared for region '" + region->name +
+                        "' in Setup (proto/README.md §15 rule 1)");
     if (std::find(regions.begin(), regions.end(), region) == regions.end())
       regions.push_back(region);
   }
@@ -64,11 +65,11 @@ void check_inside(const ParticleBatch& batch, const ZoneRegion& region,
       if (extent.active(a))
         box += std::string(box.empty() ? "" : ", ") + "axis " + std::to_string(a) + " [" +
                shortest_text(extent.lower(a)) + ", " + shortest_text(extent.upper(a)) + ")";
-    refuse(cosim::v1::ERROR_CODE_MALFORMED,
-           "region '" + region.name + "': particle " + std::to_string(i) + " (id " +
-               std::to_string(batch.id[i]) + ") at (" + shortest_text(x[0]) + ", " +
-               shortest_text(x[1]) + ", " + shortest_text(x[2]) +
-               ") m lies outside the region's box " + box + " m");
+    refuse_import(cosim::v1::ERROR_CODE_MALFORMED,
+                  "region '" + region.name + "': particle " + std::to_string(i) + " (id " +
+                      std::to_string(batch.id[i]) + ") at (" + shortest_text(x[0]) + ", " +
+                      shortest_text(x[1]) + ", " + shortest_text(x[2]) +
+                      ") m lies outside the region's box " + box + " m");
   }
 }
 
@@ -126,17 +127,18 @@ cosim::v1::FieldImportDone commit_field_import(ServedZone& zone, const cosim::Me
   std::optional<cosim::FieldAssembly> import = std::move(zone.field_import);
   zone.field_import.reset();
   if (body.tracers())
-    refuse(cosim::v1::ERROR_CODE_MALFORMED,
-           "transfer '" + body.transfer_id() +
-               "' has tracers set, but an MPM zone has no TRACERS regions");
+    refuse_import(cosim::v1::ERROR_CODE_MALFORMED,
+                  "transfer '" + body.transfer_id() +
+                      "' has tracers set, but an MPM zone has no TRACERS regions");
   if (!import || import->transfer_id() != body.transfer_id())
-    refuse(cosim::v1::ERROR_CODE_MALFORMED,
-           "no import of transfer '" + body.transfer_id() + "' was received" +
-               (import ? " (the chunks received are of '" + import->transfer_id() + "')" : ""));
+    refuse_import(
+        cosim::v1::ERROR_CODE_MALFORMED,
+        "no import of transfer '" + body.transfer_id() + "' was received" +
+            (import ? " (the chunks received are of '" + import->transfer_id() + "')" : ""));
   if (!import->complete())
-    refuse(cosim::v1::ERROR_CODE_MALFORMED,
-           "transfer '" + body.transfer_id() + "' is incomplete after " +
-               std::to_string(import->chunks()) + " chunks (no chunk with last = true)");
+    refuse_import(cosim::v1::ERROR_CODE_MALFORMED,
+                  "transfer '" + body.transfer_id() + "' is incomplete after " +
+                      std::to_string(import->chunks()) + " chunks (no chunk with last = true)");
   const cosim::Message fields = import->take();
 
   ParticleBatch all;
@@ -154,8 +156,8 @@ cosim::v1::FieldImportDone commit_field_import(ServedZone& zone, const cosim::Me
           return array.group() == region->name && array.name() == "stress";
         });
     if (region != regions.front() && stressed != with_stress)
-      refuse(cosim::v1::ERROR_CODE_MALFORMED,
-             "region '" + region->name + "': stress given for some imported regions only");
+      refuse_import(cosim::v1::ERROR_CODE_MALFORMED,
+                    "region '" + region->name + "': stress given for some imported regions only");
     with_stress = stressed;
     check_inside(batch, *region, zone.solver.grid());
     append(all, batch);
@@ -164,7 +166,7 @@ cosim::v1::FieldImportDone commit_field_import(ServedZone& zone, const cosim::Me
   try {
     zone.solver.inject_particles(all);
   } catch (const Error& error) {
-    refuse(cosim::v1::ERROR_CODE_MALFORMED, error.what());
+    refuse_import(cosim::v1::ERROR_CODE_MALFORMED, error.what());
   }
   zone.start_time = commit.header.envelope().sim_time() - zone.solver.time();
   cosim::v1::FieldImportDone done;

@@ -17,7 +17,7 @@ namespace {
 
 using config::ShapeFunction;
 
-MpmSettings settings(ShapeFunction shape, double shear_damping = 0.0) {
+MpmSettings physics_settings(ShapeFunction shape, double shear_damping = 0.0) {
   MpmSettings s;
   s.shape_function = shape;
   s.shear_damping = shear_damping;
@@ -41,7 +41,7 @@ class Shapes : public ::testing::TestWithParam<ShapeFunction> {};
 // gas carries out through the open faces is in the ledger).
 TEST_P(Shapes, ContactConservesMomentumInACollision) {
   const auto scene = collision("{contact: {friction: 0.3}}");
-  MpmSolver solver(scene, settings(GetParam()));
+  MpmSolver solver(scene, physics_settings(GetParam()));
   const MpmTotals before = solver.totals();
   solver.advance_to(3.0e-4);
   const MpmTotals after = solver.totals();
@@ -55,7 +55,7 @@ TEST_P(Shapes, ContactConservesMomentumInACollision) {
 TEST_P(Shapes, WallImpulseWithContactIsInTheLedger) {
   const auto scene =
       collision("{contact: {}}", "boundaries: {x_lower: wall, x_upper: wall, y_lower: symmetry}\n");
-  MpmSolver solver(scene, settings(GetParam()));
+  MpmSolver solver(scene, physics_settings(GetParam()));
   const MpmTotals before = solver.totals();
   solver.advance_to(2.0e-3);
   const MpmTotals after = solver.totals();
@@ -66,7 +66,7 @@ TEST_P(Shapes, WallImpulseWithContactIsInTheLedger) {
 // Shear-mode damping forces sum to zero over each cell: momentum is kept.
 TEST_P(Shapes, ShearDampingKeepsMomentum) {
   const auto scene = collision("{}");
-  MpmSolver solver(scene, settings(GetParam(), 0.5));
+  MpmSolver solver(scene, physics_settings(GetParam(), 0.5));
   const MpmTotals before = solver.totals();
   solver.advance_to(3.0e-4);
   const MpmTotals after = solver.totals();
@@ -89,7 +89,7 @@ TEST(MpmPhysics, ContactWithoutSharedNodesIsTheSingleFieldStep) {
             testing::gas_body("a", "[0.1, 0, 0]", "[0.3, 0.2, 0.1]", 1.0, 1.0e5, "[20, 5, 0]") +
             testing::gas_body("b", "[0.6, 0, 0]", "[0.8, 0.2, 0.1]", 2.0, 1.0e5, "[-10, 0, 0]") +
             "solver: {method: mpm, mpm: " + options + "}\n");
-    MpmSolver solver(scene, settings(ShapeFunction::gimp));
+    MpmSolver solver(scene, physics_settings(ShapeFunction::gimp));
     solver.advance_to(1.0e-4);
     return solver.particles().position[0];
   };
@@ -109,7 +109,7 @@ TEST(MpmPhysics, ContactIsBitwiseIndependentOfThreadCount) {
           "solver: {method: mpm, mpm: {contact: {friction: 0.1}}}\n");
   const auto run = [&](int threads) {
     omp_set_num_threads(threads);
-    MpmSolver solver(scene, settings(ShapeFunction::gimp, 0.1));
+    MpmSolver solver(scene, physics_settings(ShapeFunction::gimp, 0.1));
     for (int i = 0; i < 5; ++i) solver.advance(solver.stable_dt());
     return solver.particles().position[0];
   };
@@ -131,7 +131,7 @@ TEST(MpmPhysics, FixedParticleSetHoldsItsNodesAndBooksItsImpulse) {
             testing::gas_body("clamp", "[0.6, 0, 0]", "[0.7, 0.1, 0.1]", 1.0, 1.0e5) +
             "solver: {method: mpm}\n");
     scene.bodies[1].fixed = true;
-    MpmSolver solver(scene, settings(shape));
+    MpmSolver solver(scene, physics_settings(shape));
     // Removal may reorder the particles: compare the clamp's positions sorted.
     const auto clamp_positions = [&] {
       std::vector<double> x;
@@ -166,7 +166,7 @@ TEST(MpmPhysics, GravityAcceleratesAFreeBody) {
       "[1, 1, 0.1]", "[10, 10, 1]",
       "bodies:\n" + testing::gas_body("ball", "[0.4, 0.4, 0]", "[0.6, 0.6, 0.1]", 1.0, 1.0) +
           "solver: {method: mpm, mpm: {gravity: [0, -9.81, 0]}}\n");
-  MpmSolver solver(scene, settings(ShapeFunction::linear));
+  MpmSolver solver(scene, physics_settings(ShapeFunction::linear));
   solver.advance_to(0.01);
   const MpmTotals t = solver.totals();
   EXPECT_NEAR(t.momentum[1] / t.mass, -9.81 * 0.01, 1e-12);

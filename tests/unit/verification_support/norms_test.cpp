@@ -10,7 +10,7 @@
 namespace mpfd::verification {
 namespace {
 
-constexpr double kRoundOff = 1.0e-14;
+constexpr double kNormsRoundOff = 1.0e-14;
 
 std::vector<double> centre_values(int n, double x_min, double x_max, double (*f)(double)) {
   std::vector<double> u(static_cast<std::size_t>(n));
@@ -22,8 +22,8 @@ std::vector<double> centre_values(int n, double x_min, double x_max, double (*f)
 TEST(L1Error, ConstantOffsetGivesTheOffsetForBothReferences) {
   const std::vector<double> u(50, 2.5);
   const auto exact = [](double) { return 2.0; };
-  EXPECT_NEAR(l1_error_at_centres(u, -1.0, 3.0, exact), 0.5, kRoundOff);
-  EXPECT_NEAR(l1_error_of_cell_averages(u, -1.0, 3.0, exact), 0.5, kRoundOff);
+  EXPECT_NEAR(l1_error_at_centres(u, -1.0, 3.0, exact), 0.5, kNormsRoundOff);
+  EXPECT_NEAR(l1_error_of_cell_averages(u, -1.0, 3.0, exact), 0.5, kNormsRoundOff);
 }
 
 TEST(L1Error, CentreValuesOfAParabolaDifferFromCellAveragesByDxSquaredOver12) {
@@ -32,9 +32,9 @@ TEST(L1Error, CentreValuesOfAParabolaDifferFromCellAveragesByDxSquaredOver12) {
   const double dx = 2.0 / n;
   const auto square = [](double x) { return x * x; };
   const std::vector<double> u = centre_values(n, 0.0, 2.0, square);
-  EXPECT_NEAR(l1_error_at_centres(u, 0.0, 2.0, square), 0.0, kRoundOff);
-  EXPECT_NEAR(l1_error_of_cell_averages(u, 0.0, 2.0, square, 2), dx * dx / 12.0, kRoundOff);
-  EXPECT_NEAR(l1_error_of_cell_averages(u, 0.0, 2.0, square, 1), 0.0, kRoundOff)
+  EXPECT_NEAR(l1_error_at_centres(u, 0.0, 2.0, square), 0.0, kNormsRoundOff);
+  EXPECT_NEAR(l1_error_of_cell_averages(u, 0.0, 2.0, square, 2), dx * dx / 12.0, kNormsRoundOff);
+  EXPECT_NEAR(l1_error_of_cell_averages(u, 0.0, 2.0, square, 1), 0.0, kNormsRoundOff)
       << "one Gauss point is the centre";
 }
 
@@ -54,9 +54,9 @@ TEST(L1Error, GaussRuleOfNPointsIsExactForDegree2NMinus1) {
   }
   const auto x5 = [](double x) { return std::pow(x, 5); };
   const auto x7 = [](double x) { return std::pow(x, 7); };
-  EXPECT_NEAR(l1_error_of_cell_averages(quintic, x_min, x_max, x5, 3), 0.0, kRoundOff);
-  EXPECT_NEAR(l1_error_of_cell_averages(septic, x_min, x_max, x7, 4), 0.0, kRoundOff);
-  EXPECT_NEAR(l1_error_of_cell_averages(septic, x_min, x_max, x7, 9), 0.0, kRoundOff);
+  EXPECT_NEAR(l1_error_of_cell_averages(quintic, x_min, x_max, x5, 3), 0.0, kNormsRoundOff);
+  EXPECT_NEAR(l1_error_of_cell_averages(septic, x_min, x_max, x7, 4), 0.0, kNormsRoundOff);
+  EXPECT_NEAR(l1_error_of_cell_averages(septic, x_min, x_max, x7, 9), 0.0, kNormsRoundOff);
   EXPECT_GT(l1_error_of_cell_averages(septic, x_min, x_max, x7, 3), 1.0e-8)
       << "3 points are not exact for degree 7";
 }
@@ -66,8 +66,8 @@ TEST(L1Error, IsNormalisedByDomainLength) {
   std::vector<double> u(10, 0.0);
   u[3] = 1.0;
   const auto zero = [](double) { return 0.0; };
-  EXPECT_NEAR(l1_error_at_centres(u, 0.0, 1.0, zero), 0.1, kRoundOff);
-  EXPECT_NEAR(l1_error_at_centres(u, 0.0, 250.0, zero), 0.1, kRoundOff);
+  EXPECT_NEAR(l1_error_at_centres(u, 0.0, 1.0, zero), 0.1, kNormsRoundOff);
+  EXPECT_NEAR(l1_error_at_centres(u, 0.0, 250.0, zero), 0.1, kNormsRoundOff);
 }
 
 TEST(L1Error, RejectsEmptyGridsAndBadRules) {

@@ -26,7 +26,7 @@ namespace {
 
 const std::string kScene = std::string(MPFD_SOURCE_DIR) + "/configs/afdmp_blast_2d.yaml";
 
-std::filesystem::path fresh(const std::string& name) {
+std::filesystem::path fresh_v3_dir(const std::string& name) {
   const auto path = std::filesystem::temp_directory_path() / ("mpfd-afdmp-v3-" + name);
   std::filesystem::remove_all(path);
   return path;
@@ -45,12 +45,12 @@ V3Runs run_both(int cells) {
       replaced(read_text(kScene), "cells: [500, 500, 1]", "cells: [" + tag + ", " + tag + ", 1]");
   const std::string mpm_text =
       replaced(replaced(afdmp_text, "method: afdmp", "method: mpm"), "  afdmp: {start: mpm}\n", "");
-  const auto afdmp_scene = fresh(tag + "-afdmp.yaml");
-  const auto mpm_scene = fresh(tag + "-mpm.yaml");
+  const auto afdmp_scene = fresh_v3_dir(tag + "-afdmp.yaml");
+  const auto mpm_scene = fresh_v3_dir(tag + "-mpm.yaml");
   std::ofstream(afdmp_scene) << afdmp_text;
   std::ofstream(mpm_scene) << mpm_text;
 
-  V3Runs runs{fresh(tag + "-afdmp"), fresh(tag + "-mpm"), 0.5 / cells, 0};
+  V3Runs runs{fresh_v3_dir(tag + "-afdmp"), fresh_v3_dir(tag + "-mpm"), 0.5 / cells, 0};
   coupler::CoupledRunOptions options;
   options.out_dir = runs.afdmp;
   options.progress = false;

@@ -38,7 +38,7 @@
 namespace mpfd::verification {
 namespace {
 
-const std::string kScene = std::string(MPFD_SOURCE_DIR) + "/configs/afdmp_steel_plate_2d.yaml";
+const std::string kPlateScene = std::string(MPFD_SOURCE_DIR) + "/configs/afdmp_steel_plate_2d.yaml";
 const std::vector<std::string> kGauges = {"plate_centre", "plate_edge"};
 constexpr double kProminence = 0.05;  // of the history's peak
 // The plate's through-thickness reverberation period 2 d / c_L: d = 20 mm, c_L =
@@ -56,7 +56,7 @@ std::string without_line(std::string text, const std::string& start) {
   return text;
 }
 
-std::filesystem::path fresh(const std::string& name) {
+std::filesystem::path fresh_v5_dir(const std::string& name) {
   const auto path = std::filesystem::temp_directory_path() / ("mpfd-afdmp-v5-" + name);
   std::filesystem::remove_all(path);
   return path;
@@ -115,14 +115,14 @@ struct V5Reading {
 
 /// The scene at nx x nx/2 cells, run by AFDMP and by pure MPM (driven here, the
 /// gauges sampled as the coupler samples them), phase-3 histories of both.
-V5Reading run_both(int nx) {
+V5Reading run_v5_both(int nx) {
   const std::string tag = std::to_string(nx);
   const std::string afdmp_text =
-      replaced(read_text(kScene), "cells: [1000, 500, 1]",
+      replaced(read_text(kPlateScene), "cells: [1000, 500, 1]",
                "cells: [" + tag + ", " + std::to_string(nx / 2) + ", 1]");
-  const auto afdmp_scene = fresh(tag + "-afdmp.yaml");
+  const auto afdmp_scene = fresh_v5_dir(tag + "-afdmp.yaml");
   std::ofstream(afdmp_scene) << afdmp_text;
-  const auto afdmp_dir = fresh(tag + "-afdmp");
+  const auto afdmp_dir = fresh_v5_dir(tag + "-afdmp");
   coupler::CoupledRunOptions options;
   options.out_dir = afdmp_dir;
   options.progress = false;
@@ -148,7 +148,7 @@ V5Reading run_both(int nx) {
   const std::string mpm_text = without_line(
       without_line(replaced(afdmp_text, "method: afdmp", "method: mpm"), "  afdmp: {start: mpm}"),
       "  mpm: {lower: [0.30");
-  const auto mpm_scene = fresh(tag + "-mpm.yaml");
+  const auto mpm_scene = fresh_v5_dir(tag + "-mpm.yaml");
   std::ofstream(mpm_scene) << replaced(mpm_text, "zones:\n", "");
   const auto scene = config::load_scene(mpm_scene);
   mpm::MpmSolver solver(scene, mpm::MpmSettings::from_scene(scene));
@@ -233,7 +233,7 @@ TEST(AfdmpSteelPlate, Fast_mises_histories_smooth_after_the_handoff) {
   // vs pure MPM 534 MPa, 30; edge 542 MPa, 4 vs 622 MPa, 8. The centre's own
   // particle rings through the plate's two cells in both runs, too coarse for its
   // thickness mode: the design's "<= 4" holds at the edge only.
-  expect_acceptance(run_both(100), 4, false);
+  expect_acceptance(run_v5_both(100), 4, false);
 }
 
 TEST(AfdmpSteelPlate, Full_mises_histories_smooth_after_the_handoff) {
@@ -248,7 +248,7 @@ TEST(AfdmpSteelPlate, Full_mises_histories_smooth_after_the_handoff) {
   // 5.60 us: the interface-driven part). So "<= 4 extrema" (design §5.3) cannot
   // hold on a grid that resolves the plate's reverberation; asserted: no more
   // oscillation than pure MPM, and that what rings is the plate's own mode.
-  expect_acceptance(run_both(400), std::nullopt, true);
+  expect_acceptance(run_v5_both(400), std::nullopt, true);
 }
 
 }  // namespace

@@ -27,8 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kConfigs = fs::path(MPFD_SOURCE_DIR) / "configs";
-constexpr double kSphereMass = 0.0130494;  // kg: r = 12.41 mm at 1630 kg/m^3
+const fs::path kConfigDir = fs::path(MPFD_SOURCE_DIR) / "configs";
 
 struct FarRun {
   std::vector<Station> stations;  ///< the scene's order
@@ -45,8 +44,8 @@ FarRun run_far(int cells, int switch_power = 1) {
   const std::string grid = "cells: [" + std::to_string(cells) + ", " + std::to_string(cells) +
                            ", " + std::to_string(cells) + "]";
   const auto scene_file = dir / "scene.yaml";
-  std::string text =
-      replaced(read_text(kConfigs / "afdmp_free_air_3d_far.yaml"), "cells: [125, 125, 125]", grid);
+  std::string text = replaced(read_text(kConfigDir / "afdmp_free_air_3d_far.yaml"),
+                              "cells: [125, 125, 125]", grid);
   if (switch_power != 1)
     text = replaced(
         text, "  method: afdmp\n",
@@ -154,7 +153,7 @@ TEST(AfdmpV4Far, Full_octant_converges_towards_the_1d_reference) {
 }
 
 TEST(AfdmpV4Far, Full_1d_reference_against_kingery_bulmash) {
-  const fs::path file = kConfigs / "afdmp_free_air_1d_reference.yaml";
+  const fs::path file = kConfigDir / "afdmp_free_air_1d_reference.yaml";
   const auto scene = config::load_scene(file);
   const fs::path out = fs::temp_directory_path() / "mpfd-afdmp-v4-1d-reference";
   mpm::spherical::run_spherical(scene, {file, out, true});

@@ -28,8 +28,7 @@ namespace mpfd::verification {
 namespace {
 
 const std::string kConfigs = std::string(MPFD_SOURCE_DIR) + "/configs/";
-constexpr double kCubeMass = 0.01304;     // kg: 20 mm cube, 1630 kg/m^3 (T §3.4.3)
-constexpr double kSphereMass = 0.013049;  // kg: r = 12.41 mm
+constexpr double kCubeMass = 0.01304;  // kg: 20 mm cube, 1630 kg/m^3 (T §3.4.3)
 // The scenes' end: KB's arrival at the farthest gauge (R = 0.38 m) is 308 us.
 constexpr double kEnd = 3.4e-4;
 

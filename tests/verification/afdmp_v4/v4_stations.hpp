@@ -13,6 +13,9 @@
 
 namespace mpfd::verification {
 
+/// The V4 sphere: r = 12.41 mm of TNT at 1630 kg/m^3 (the thesis cube's 13.04 g).
+inline constexpr double kSphereMass = 0.0130494;  // kg
+
 struct Station {
   std::string gauge;
   double distance = 0;  ///< R [m]

@@ -49,12 +49,6 @@ std::string plate_scene(const std::string& zone = kZone, const std::string& char
          kMaterials + charge + plate + zone + "solver: {method: afdmp" + solver + "}\n";
 }
 
-// The only error is at `path` and says `says`.
-void expect_one(const std::string& yaml, const std::string& path, const std::string& says) {
-  EXPECT_THAT(errors_of(yaml), ElementsAre(AllOf(StartsWith("scene.yaml:"),
-                                                 HasSubstr(": " + path + ": "), HasSubstr(says))));
-}
-
 TEST(AfdmpChecks, The_V5_shape_is_accepted_with_its_plate_zone_and_charge) {
   const Scene s = parse_scene(plate_scene(), "v5.yaml");
   EXPECT_EQ(s.solver.afdmp.start, AfdmpStart::mpm);

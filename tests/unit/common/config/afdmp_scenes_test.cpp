@@ -3,18 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <variant>
 
 #include "common/config/scene_loader.hpp"
+#include "tests/unit/common/config/scene_test_support.hpp"
 
 namespace mpfd::config::test {
 namespace {
-
-namespace fs = std::filesystem;
-
-const fs::path kConfigs = fs::path(MPFD_SOURCE_DIR) / "configs";
 
 double h(const Scene& s, int axis) {
   return (s.domain.upper[axis] - s.domain.lower[axis]) / s.domain.cells[axis];

@@ -21,8 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kConfigs = fs::path(MPFD_SOURCE_DIR) / "configs";
-
 std::string read(const fs::path& file) {
   std::ifstream in(file);
   std::ostringstream text;

@@ -2,8 +2,10 @@
 // Helpers of the config tests: a minimal valid scene to build broken ones
 // from, and the messages a scene's SceneError carries.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,6 +13,9 @@
 #include "common/config/scene_loader.hpp"
 
 namespace mpfd::config::test {
+
+/// The repository's ready scenes.
+inline const std::filesystem::path kConfigs = std::filesystem::path(MPFD_SOURCE_DIR) / "configs";
 
 /// A minimal valid 1D scene: thesis air at rest in a 1 m tube.
 inline const std::string kMinimalScene = R"(name: tube
@@ -34,6 +39,14 @@ inline std::vector<std::string> errors_of(std::string_view yaml) {
   }
   ADD_FAILURE() << "the scene parsed but should not have:\n" << yaml;
   return {};
+}
+
+/// The only error of `yaml` is at `path` and says `says`.
+inline void expect_one(const std::string& yaml, const std::string& path, const std::string& says) {
+  using ::testing::HasSubstr;
+  EXPECT_THAT(errors_of(yaml), ::testing::ElementsAre(::testing::AllOf(
+                                   ::testing::StartsWith("scene.yaml:"),
+                                   HasSubstr(": " + path + ": "), HasSubstr(says))));
 }
 
 }  // namespace mpfd::config::test

@@ -14,7 +14,7 @@ namespace {
 
 using test::Dimensions;
 
-constexpr double kTol = 1e-12;  // round-off of sums over up to 64 particles
+constexpr double kSumTol = 1e-12;  // round-off of sums over up to 64 particles
 
 template <int Dim>
 struct Strip {
@@ -83,13 +83,13 @@ TYPED_TEST(InterfaceNodes, Uniform_flow_is_left_unchanged) {
       const double node_mass = rho * g.cell_volume;
       const double force_scale = pressure * g.face_area(axis);
       for (std::size_t i = 0; i < nodes.count(); ++i) {
-        EXPECT_NEAR(mpm.mass[i] + add.mass[i], node_mass, kTol * node_mass);
+        EXPECT_NEAR(mpm.mass[i] + add.mass[i], node_mass, kSumTol * node_mass);
         EXPECT_LE((mpm.momentum[i] + add.momentum[i] - node_mass * v).norm(),
-                  kTol * node_mass * v.norm());
-        EXPECT_LE((mpm.force[i] + add.force[i]).norm(), kTol * force_scale)
+                  kSumTol * node_mass * v.norm());
+        EXPECT_LE((mpm.force[i] + add.force[i]).norm(), kSumTol * force_scale)
             << "axis " << axis << " side " << side << " node " << i;
         // The FDM term alone is half the node (the outer half-support).
-        EXPECT_NEAR(add.mass[i], 0.5 * node_mass, kTol * node_mass);
+        EXPECT_NEAR(add.mass[i], 0.5 * node_mass, kSumTol * node_mass);
       }
     }
   }
@@ -137,9 +137,9 @@ TYPED_TEST(InterfaceNodes, Correction_conserves_momentum_for_any_strip_state) {
       expected_momentum += 0.5 * strip.momentum[c] * g.cell_volume;
       expected_force(face.axis) += side * strip.pressure[c] * g.face_area(face.axis);
     }
-    EXPECT_NEAR(mass, expected_mass, kTol * expected_mass);
-    EXPECT_LE((momentum - expected_momentum).norm(), kTol * expected_momentum.norm());
-    EXPECT_LE((force - expected_force).norm(), kTol * expected_force.norm());
+    EXPECT_NEAR(mass, expected_mass, kSumTol * expected_mass);
+    EXPECT_LE((momentum - expected_momentum).norm(), kSumTol * expected_momentum.norm());
+    EXPECT_LE((force - expected_force).norm(), kSumTol * expected_force.norm());
   }
 }
 
@@ -175,7 +175,7 @@ TEST(InterfaceNodes2D, Push_volume_is_the_face_mass_over_the_outer_density) {
   for (std::size_t i = 0; i < nodes.count(); ++i) {
     EXPECT_EQ(with_full.force[i], t_as_printed.force[i]);
     EXPECT_LE((with_half.force[i] - 0.5 * t_as_printed.force[i]).norm(),
-              kTol * t_as_printed.force[i].norm());
+              kSumTol * t_as_printed.force[i].norm());
     EXPECT_EQ(with_half.mass[i], t_as_printed.mass[i]);
     EXPECT_EQ(with_half.momentum[i], t_as_printed.momentum[i]);
   }
@@ -255,9 +255,9 @@ TYPED_TEST(InterfaceNodes, Outer_nodes_of_a_uniform_state_are_interior_nodes) {
                             layout, make_outer_node_stencil(layout, nodes), g, add.outputs());
       const double node_mass = rho * g.cell_volume;
       for (std::size_t i = 0; i < nodes.count(); ++i) {
-        EXPECT_NEAR(add.mass[i], node_mass, kTol * node_mass);
-        EXPECT_LE((add.momentum[i] - node_mass * v).norm(), kTol * node_mass * v.norm());
-        EXPECT_LE(add.force[i].norm(), kTol * pressure * g.face_area(axis))
+        EXPECT_NEAR(add.mass[i], node_mass, kSumTol * node_mass);
+        EXPECT_LE((add.momentum[i] - node_mass * v).norm(), kSumTol * node_mass * v.norm());
+        EXPECT_LE(add.force[i].norm(), kSumTol * pressure * g.face_area(axis))
             << "axis " << axis << " side " << side << " node " << i;
       }
     }
@@ -310,8 +310,8 @@ TYPED_TEST(InterfaceNodes, Outer_nodes_take_half_of_both_cells_and_their_pressur
       expected_force(face.axis) +=
           side * (beyond.pressure[t] - strip.pressure[c]) * g.face_area(face.axis);
     }
-    EXPECT_NEAR(mass, expected_mass, kTol * expected_mass);
-    EXPECT_LE((momentum - expected_momentum).norm(), kTol * expected_momentum.norm());
+    EXPECT_NEAR(mass, expected_mass, kSumTol * expected_mass);
+    EXPECT_LE((momentum - expected_momentum).norm(), kSumTol * expected_momentum.norm());
     EXPECT_LE((force - expected_force).norm(), 1e-9 * 1e5 * g.face_area(face.axis));
   }
 }

@@ -16,16 +16,16 @@ namespace {
 using test::Dimensions;
 
 // Relative round-off of ledgers summed over up to ~10^4 particle amounts.
-constexpr double kTol = 1e-12;
+constexpr double kLedgerTol = 1e-12;
 constexpr double kGamma = 1.4;
 
 // The strip_cells export: rho, momentum, E per strip cell.
 template <int Dim>
-struct Strip {
+struct StripCells {
   std::vector<double> rho;
   std::vector<Vec<Dim>> momentum;
   std::vector<double> energy;
-  explicit Strip(std::size_t n) : rho(n), momentum(n), energy(n) {}
+  explicit StripCells(std::size_t n) : rho(n), momentum(n), energy(n) {}
   CellStates<Dim> states() const { return {rho, momentum, energy}; }
   void set(std::size_t c, double r, const Vec<Dim>& v, double p) {
     rho[c] = r;
@@ -33,8 +33,8 @@ struct Strip {
     energy[c] = p / (kGamma - 1) + 0.5 * r * v.squaredNorm();
   }
   /// n cells of gas at rest at density r and pressure p.
-  static Strip at_rest(std::size_t n, double r, double p) {
-    Strip strip(n);
+  static StripCells at_rest(std::size_t n, double r, double p) {
+    StripCells strip(n);
     for (std::size_t c = 0; c < n; ++c) strip.set(c, r, Vec<Dim>::Zero(), p);
     return strip;
   }
@@ -76,7 +76,7 @@ struct Ledger {
 };
 
 template <int Dim>
-IndexBox<Dim> strip_box(const ZoneFace& face) {
+IndexBox<Dim> injection_strip_box(const ZoneFace& face) {
   auto box = test::cube<Dim>(0, 3);
   box.lo[face.axis] = 5;
   box.hi[face.axis] = 7;
@@ -138,12 +138,12 @@ TYPED_TEST(ParticleInjection, Constant_inflow_creates_the_expected_mass) {
   const auto g = test::test_geometry<Dim>();
   for (int side : {1, -1}) {
     const ZoneFace face{0, side};
-    const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+    const auto layout = make_strip_layout(injection_strip_box<Dim>(face), face);
     const double rho = 1.5;
     const double pressure = 2.0e5;
     Vec<Dim> v = test::some_velocity<Dim>();
     v(0) = side * 200.0;  // into the zone
-    Strip<Dim> strip(layout.box.count());
+    StripCells<Dim> strip(layout.box.count());
     for (std::size_t c = 0; c < layout.box.count(); ++c) strip.set(c, rho, v, pressure);
     const double reference_mass = rho * g.cell_volume / (1 << Dim);
     const double flux = 0.3 * reference_mass;
@@ -165,11 +165,11 @@ TYPED_TEST(ParticleInjection, Constant_inflow_creates_the_expected_mass) {
       for (std::size_t p = 0; p < total; ++p) {
         const std::size_t t = batch.face_cell[p];
         created[t] += batch.mass[p];
-        EXPECT_NEAR(batch.mass[p], 2.1 / 4 * reference_mass, kTol * reference_mass);
-        EXPECT_LE((batch.velocity[p] - v).norm(), kTol * v.norm());
-        EXPECT_NEAR(batch.mass[p] / batch.volume[p], rho, kTol * rho);
+        EXPECT_NEAR(batch.mass[p], 2.1 / 4 * reference_mass, kLedgerTol * reference_mass);
+        EXPECT_LE((batch.velocity[p] - v).norm(), kLedgerTol * v.norm());
+        EXPECT_NEAR(batch.mass[p] / batch.volume[p], rho, kLedgerTol * rho);
         const double t_4_18 = pressure * batch.mass[p] / ((kGamma - 1) * rho);  // T (4-18)
-        EXPECT_NEAR(batch.internal_energy[p], t_4_18, kTol * t_4_18);
+        EXPECT_NEAR(batch.internal_energy[p], t_4_18, kLedgerTol * t_4_18);
         // Inside cell k-w+1, within d = min(7 u Δt, Δx) of the face.
         const Vec<Dim> lower = g.lower_corner(layout.inner_cell[t]);
         const double depth = std::min(7 * 200.0 * dt, g.spacing(0));
@@ -186,8 +186,8 @@ TYPED_TEST(ParticleInjection, Constant_inflow_creates_the_expected_mass) {
     }
     EXPECT_EQ(particles, 40 * faces);
     for (std::size_t t = 0; t < faces; ++t) {
-      EXPECT_NEAR(created[t], 70 * flux, kTol * 70 * flux);
-      EXPECT_NEAR(pending.mass[t], 0.0, kTol * flux);
+      EXPECT_NEAR(created[t], 70 * flux, kLedgerTol * 70 * flux);
+      EXPECT_NEAR(pending.mass[t], 0.0, kLedgerTol * flux);
     }
   }
 }
@@ -199,7 +199,7 @@ TEST(ParticleInjection1D, Long_waiting_parcel_stays_inside_its_cell) {
   const auto g = test::test_geometry<1>();
   const ZoneFace face{0, 1};
   const auto layout = make_strip_layout(IndexBox<1>{{5}, {7}}, face);
-  Strip<1> strip(2);
+  StripCells<1> strip(2);
   strip.set(0, 1.2, Vec<1>(50.0), 1e5);
   strip.set(1, 1.2, Vec<1>(50.0), 1e5);
   const double cell_mass = 1.2 * g.cell_volume;
@@ -237,7 +237,7 @@ TYPED_TEST(ParticleInjection, Conserves_mass_momentum_energy_with_waiting_parcel
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const ZoneFace face{Dim - 1, -1};
-  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  const auto layout = make_strip_layout(injection_strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
   const double reference_mass = 1.2 * g.cell_volume / (1 << Dim);
   const InjectionRule rule{reference_mass, 0.25 * reference_mass};
@@ -245,7 +245,7 @@ TYPED_TEST(ParticleInjection, Conserves_mass_momentum_energy_with_waiting_parcel
   FaceAmounts<Dim> returned(faces);
   std::vector<std::size_t> count(faces);
   Ledger<Dim> fluxed, injected, given_back;
-  Strip<Dim> strip(layout.box.count());
+  StripCells<Dim> strip(layout.box.count());
   const double dt = 2e-6;
   for (int step = 0; step < 400; ++step) {
     for (std::size_t c = 0; c < layout.box.count(); ++c) {
@@ -279,8 +279,8 @@ TYPED_TEST(ParticleInjection, Conserves_mass_momentum_energy_with_waiting_parcel
           batch.mass[p], batch.mass[p] * batch.velocity[p],
           batch.internal_energy[p] + 0.5 * batch.mass[p] * batch.velocity[p].squaredNorm());
       EXPECT_GT(batch.internal_energy[p], 0);
-      EXPECT_GE(batch.mass[p], 0.25 * reference_mass * (1 - kTol));
-      EXPECT_LE(batch.mass[p], reference_mass * (1 + kTol));
+      EXPECT_GE(batch.mass[p], 0.25 * reference_mass * (1 - kLedgerTol));
+      EXPECT_LE(batch.mass[p], reference_mass * (1 + kLedgerTol));
       const Vec<Dim> lower = g.lower_corner(layout.inner_cell[batch.face_cell[p]]);
       for (int a = 0; a < Dim; ++a) {
         EXPECT_GT(batch.position[p](a), lower(a));
@@ -293,11 +293,12 @@ TYPED_TEST(ParticleInjection, Conserves_mass_momentum_energy_with_waiting_parcel
     waiting.add(pending.mass[t], pending.momentum[t], pending.energy[t]);
   ASSERT_GT(injected.mass, 0.5 * fluxed.mass);  // the test exercises injection ...
   ASSERT_GT(given_back.mass, 0.0);              // ... and returns to the FDM
-  EXPECT_NEAR(injected.mass + given_back.mass + waiting.mass, fluxed.mass, kTol * fluxed.mass);
+  EXPECT_NEAR(injected.mass + given_back.mass + waiting.mass, fluxed.mass,
+              kLedgerTol * fluxed.mass);
   EXPECT_LE((injected.momentum + given_back.momentum + waiting.momentum - fluxed.momentum).norm(),
-            kTol * fluxed.mass * 300);
+            kLedgerTol * fluxed.mass * 300);
   EXPECT_NEAR(injected.energy + given_back.energy + waiting.energy, fluxed.energy,
-              kTol * fluxed.energy);
+              kLedgerTol * fluxed.energy);
 
   drain_parcels(pending, returned.view());
   Ledger<Dim> drained;
@@ -305,7 +306,7 @@ TYPED_TEST(ParticleInjection, Conserves_mass_momentum_energy_with_waiting_parcel
     drained.add(returned.mass[t], returned.momentum[t], returned.energy[t]);
     EXPECT_EQ(pending.mass[t], 0.0);
   }
-  EXPECT_NEAR(drained.mass, waiting.mass, kTol * fluxed.mass);
+  EXPECT_NEAR(drained.mass, waiting.mass, kLedgerTol * fluxed.mass);
 }
 
 // Protocol v1.1: the FDM's own crossing feeds the parcels. Over 400 random
@@ -319,7 +320,7 @@ TYPED_TEST(ParticleInjection, Crossed_amounts_reach_the_parcels_or_go_back_exact
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const ZoneFace face{0, 1};
-  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  const auto layout = make_strip_layout(injection_strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
   const double reference_mass = 1.2 * g.cell_volume / (1 << Dim);
   const InjectionRule rule{reference_mass, 0.125 * reference_mass};
@@ -328,7 +329,7 @@ TYPED_TEST(ParticleInjection, Crossed_amounts_reach_the_parcels_or_go_back_exact
   std::vector<double> pressure(layout.box.count());
   std::vector<std::size_t> count(faces);
   Ledger<Dim> moved, injected, given_back;
-  Strip<Dim> strip(layout.box.count());
+  StripCells<Dim> strip(layout.box.count());
   const double dt = 2e-6, area = g.face_area(face.axis);
   for (int step = 0; step < 400; ++step) {
     for (std::size_t c = 0; c < layout.box.count(); ++c) {
@@ -379,11 +380,11 @@ TYPED_TEST(ParticleInjection, Crossed_amounts_reach_the_parcels_or_go_back_exact
   ASSERT_GT(injected.mass, 0.0);    // the test exercises injection ...
   ASSERT_LT(given_back.mass, 0.0);  // ... and outflow cancelled in cell k-w
   const double scale = std::abs(injected.mass) + std::abs(given_back.mass);
-  EXPECT_NEAR(injected.mass + given_back.mass + waiting.mass, moved.mass, kTol * scale);
+  EXPECT_NEAR(injected.mass + given_back.mass + waiting.mass, moved.mass, kLedgerTol * scale);
   EXPECT_LE((injected.momentum + given_back.momentum + waiting.momentum - moved.momentum).norm(),
-            kTol * scale * 300);
+            kLedgerTol * scale * 300);
   EXPECT_NEAR(injected.energy + given_back.energy + waiting.energy, moved.energy,
-              kTol * (std::abs(injected.energy) + std::abs(given_back.energy)));
+              kLedgerTol * (std::abs(injected.energy) + std::abs(given_back.energy)));
 }
 
 // Behind a strong wave the FDM's face pressure p* is far from p_f = ½(p_a + p_b):
@@ -396,9 +397,9 @@ TYPED_TEST(ParticleInjection, A_parcel_with_no_internal_energy_left_goes_back_wh
   constexpr int Dim = TypeParam::value;
   const auto g = test::test_geometry<Dim>();
   const ZoneFace face{0, 1};
-  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  const auto layout = make_strip_layout(injection_strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
-  const auto strip = Strip<Dim>::at_rest(layout.box.count(), 1.2, 2e7);
+  const auto strip = StripCells<Dim>::at_rest(layout.box.count(), 1.2, 2e7);
   const std::vector<double> pressure(layout.box.count(), 2e7);
   FaceAmounts<Dim> returned(faces), crossed(faces);
   const double dt = 1e-6, area = g.face_area(face.axis), rho = 1.2, u_n = 10, p_star = 1e5;
@@ -433,9 +434,9 @@ TYPED_TEST(ParticleInjection, Outflow_smaller_than_the_parcel_takes_back_its_sha
   constexpr int Dim = TypeParam::value;
   const auto g = test::test_geometry<Dim>();
   const ZoneFace face{0, 1};
-  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  const auto layout = make_strip_layout(injection_strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
-  const auto strip = Strip<Dim>::at_rest(layout.box.count(), 1.2, 1e5);
+  const auto strip = StripCells<Dim>::at_rest(layout.box.count(), 1.2, 1e5);
   const std::vector<double> pressure(layout.box.count(), 1e5);
   Parcels<Dim> pending(faces);
   Vec<Dim> parcel_momentum = Vec<Dim>::Zero();
@@ -477,9 +478,9 @@ TEST(ParticleInjection3D, Round_trip_back_to_the_FDM_is_conservative) {
   constexpr int Dim = 3;
   const auto g = test::test_geometry<Dim>();
   const ZoneFace face{1, 1};
-  const auto layout = make_strip_layout(strip_box<Dim>(face), face);
+  const auto layout = make_strip_layout(injection_strip_box<Dim>(face), face);
   const std::size_t faces = layout.face_cells();
-  Strip<Dim> strip(layout.box.count());
+  StripCells<Dim> strip(layout.box.count());
   for (std::size_t c = 0; c < layout.box.count(); ++c)
     strip.set(c, 1.3, Vec<Dim>(10.0, 150.0 + static_cast<double>(c), -20.0), 3e5);
   Parcels<Dim> pending(faces);
@@ -509,8 +510,8 @@ TEST(ParticleInjection3D, Round_trip_back_to_the_FDM_is_conservative) {
     mass += d_rho[c] * g.cell_volume;
     total_energy += d_energy[c] * g.cell_volume;
   }
-  EXPECT_NEAR(mass, fluxed_mass, kTol * fluxed_mass);
-  EXPECT_NEAR(total_energy, fluxed_energy, kTol * fluxed_energy);
+  EXPECT_NEAR(mass, fluxed_mass, kLedgerTol * fluxed_mass);
+  EXPECT_NEAR(total_energy, fluxed_energy, kLedgerTol * fluxed_energy);
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace {
 
 using test::Dimensions;
 
-constexpr double kTol = 1e-12;  // relative round-off of sums over 500 particles
+constexpr double kRemovalTol = 1e-12;  // relative round-off of sums over 500 particles
 
 template <class D>
 class ParticleRemoval : public ::testing::Test {};
@@ -70,9 +70,9 @@ TYPED_TEST(ParticleRemoval, Deposit_conserves_mass_momentum_energy) {
     p_out += d_momentum[c] * g.cell_volume;
     e_out += d_energy[c] * g.cell_volume;
   }
-  EXPECT_NEAR(m_out, m_in, kTol * m_in);
-  EXPECT_LE((p_out - p_in).norm(), kTol * m_in * 200);
-  EXPECT_NEAR(e_out, e_in, kTol * e_in);
+  EXPECT_NEAR(m_out, m_in, kRemovalTol * m_in);
+  EXPECT_LE((p_out - p_in).norm(), kRemovalTol * m_in * 200);
+  EXPECT_NEAR(e_out, e_in, kRemovalTol * e_in);
 }
 
 // T (4-19) ... (4-21) by hand: one particle into a cell in state (ρ, ρu, E).

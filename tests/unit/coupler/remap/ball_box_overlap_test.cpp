@@ -11,8 +11,6 @@
 namespace mpfd::coupler::remap {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 double overlap3(std::array<double, 3> lo, std::array<double, 3> hi, double r) {
   return ball_box_overlap(lo, hi, r);
 }
@@ -41,15 +39,16 @@ double column_quadrature(std::array<double, 3> lo, std::array<double, 3> hi, dou
 
 TEST(BallBoxOverlap, Box_holding_the_ball_gives_its_volume) {
   const double r = 0.37;
-  EXPECT_NEAR(overlap3({-1, -1, -1}, {1, 1, 1}, r), 4.0 / 3.0 * kPi * r * r * r, 1e-15);
-  EXPECT_NEAR(overlap2({-1, -1}, {1, 1}, r), kPi * r * r, 1e-15);
+  EXPECT_NEAR(overlap3({-1, -1, -1}, {1, 1, 1}, r), 4.0 / 3.0 * std::numbers::pi * r * r * r,
+              1e-15);
+  EXPECT_NEAR(overlap2({-1, -1}, {1, 1}, r), std::numbers::pi * r * r, 1e-15);
 }
 
 TEST(BallBoxOverlap, Octant_and_cap_match_their_closed_forms) {
-  EXPECT_NEAR(overlap3({0, 0, 0}, {2, 2, 2}, 1.0), kPi / 6.0, 1e-15);
+  EXPECT_NEAR(overlap3({0, 0, 0}, {2, 2, 2}, 1.0), std::numbers::pi / 6.0, 1e-15);
   const double a = 0.6;  // cap x >= a of the unit ball: pi (1 - a)^2 (2 + a) / 3
-  EXPECT_NEAR(overlap3({a, -2, -2}, {2, 2, 2}, 1.0), kPi * (1 - a) * (1 - a) * (2 + a) / 3.0,
-              1e-15);
+  EXPECT_NEAR(overlap3({a, -2, -2}, {2, 2, 2}, 1.0),
+              std::numbers::pi * (1 - a) * (1 - a) * (2 + a) / 3.0, 1e-15);
   // Disc segment y >= a: acos(a) - a sqrt(1 - a^2).
   EXPECT_NEAR(overlap2({-2, a}, {2, 2}, 1.0), std::acos(a) - a * std::sqrt(1 - a * a), 1e-15);
 }
@@ -78,7 +77,7 @@ TEST(BallBoxOverlap, Cells_of_a_grid_sum_to_the_ball_volume_to_round_off) {
       for (int k = 0; k < n; ++k)
         sum += overlap3({-1.2 + i * h, -1.2 + j * h, -1.2 + k * h},
                         {-1.2 + (i + 1) * h, -1.2 + (j + 1) * h, -1.2 + (k + 1) * h}, r);
-  EXPECT_NEAR(sum / (4.0 / 3.0 * kPi * r * r * r), 1.0, 1e-13);
+  EXPECT_NEAR(sum / (4.0 / 3.0 * std::numbers::pi * r * r * r), 1.0, 1e-13);
 }
 
 TEST(BallBoxOverlap, Inverted_box_is_an_error) {

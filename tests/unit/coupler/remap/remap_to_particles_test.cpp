@@ -16,8 +16,6 @@
 namespace mpfd::coupler {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(RemapToParticles, TNT_sphere_in_water_keeps_mass_and_energy_to_round_off) {
   const int shells = 90;
   std::vector<double> edges, rho, u, e;
@@ -32,7 +30,8 @@ TEST(RemapToParticles, TNT_sphere_in_water_keeps_mass_and_energy_to_round_off) {
     u.push_back(charge ? 2000.0 * r : 150.0 * 0.1 / r);
     e.push_back(charge ? 4.29e6 : 5e3);
     material.push_back(charge ? 0 : 1);
-    const double v = 4.0 / 3.0 * kPi * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3));
+    const double v =
+        4.0 / 3.0 * std::numbers::pi * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3));
     mass += rho.back() * v;
     energy += rho.back() * v * (e.back() + 0.5 * u.back() * u.back());
   }
@@ -89,7 +88,7 @@ TEST(RemapToParticles, TNT_sphere_in_water_keeps_mass_and_energy_to_round_off) {
   EXPECT_NEAR(particle_mass, mass, 1e-13 * mass);
   EXPECT_NEAR(particle_energy, energy, 1e-13 * energy);
   // The charge: shells below r = 0.1 m (10 of 90 shells of 5 mm).
-  EXPECT_NEAR(charge_mass, 1630.0 * 4.0 / 3.0 * kPi * 1e-3, 1e-3 * charge_mass);
+  EXPECT_NEAR(charge_mass, 1630.0 * 4.0 / 3.0 * std::numbers::pi * 1e-3, 1e-3 * charge_mass);
 }
 
 }  // namespace

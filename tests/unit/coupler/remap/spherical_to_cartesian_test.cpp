@@ -12,8 +12,7 @@
 namespace mpfd::coupler::remap {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRoundOff = 1e-13;
+constexpr double kTransformRoundOff = 1e-13;
 
 // Owning storage for a RadialProfile.
 struct Profile {
@@ -26,9 +25,10 @@ struct Profile {
   [[nodiscard]] RemapTotals totals(double angle_measure) const {  // 4 pi sphere, 2 pi cylinder
     RemapTotals t;
     for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
-      const double v = angle_measure == 4.0 * kPi
-                           ? 4.0 / 3.0 * kPi * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3))
-                           : kPi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]);
+      const double v =
+          angle_measure == 4.0 * std::numbers::pi
+              ? 4.0 / 3.0 * std::numbers::pi * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3))
+              : std::numbers::pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]);
       t.mass += rho[k] * v;
       t.energy += rho[k] * v * (e[k] + 0.5 * u[k] * u[k]);
       t.radial_impulse += rho[k] * v * u[k];
@@ -83,9 +83,9 @@ TEST(SphericalToCartesian, Uniform_sphere_gives_its_mass_to_round_off) {
       grid::UniformGrid::from_bounds({-1, -1, -1}, {1, 1, 1}, {20, 20, 20});
   const Profile p{{0.0, 0.73}, {1630.0}, {0.0}, {4.29e6}, {}, {}, {0}};
   const CartesianFields f = remap_radial_profile(grid, {0.013, -0.021, 0.007}, p.view());
-  const double mass = 1630.0 * 4.0 / 3.0 * kPi * std::pow(0.73, 3);
+  const double mass = 1630.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(0.73, 3);
   const Sums s = grid_sums(grid, {0.013, -0.021, 0.007}, f);
-  EXPECT_NEAR(s.mass, mass, kRoundOff * mass);
+  EXPECT_NEAR(s.mass, mass, kTransformRoundOff * mass);
   // Cells entirely inside hold exactly the sphere's density.
   EXPECT_NEAR(f.density[grid.cell_index(10, 10, 10)], 1630.0, 1e-12 * 1630.0);
   EXPECT_EQ(f.density[grid.cell_index(0, 0, 0)], 0.0);
@@ -97,22 +97,22 @@ TEST(SphericalToCartesian, Conserves_mass_energy_and_radial_impulse_in_3D) {
   const grid::Vec3 centre{0.0, 0.0, 0.0};
   const Profile p = blast_profile(173, 0.55);  // shells not aligned with the cells
   const CartesianFields f = remap_radial_profile(grid, centre, p.view());
-  const RemapTotals want = p.totals(4.0 * kPi);
+  const RemapTotals want = p.totals(4.0 * std::numbers::pi);
   const RemapTotals inside = totals_inside_grid(grid, centre, p.view());
-  EXPECT_NEAR(inside.mass, want.mass, kRoundOff * want.mass);
+  EXPECT_NEAR(inside.mass, want.mass, kTransformRoundOff * want.mass);
   const Sums s = grid_sums(grid, centre, f);
-  EXPECT_NEAR(s.mass, want.mass, kRoundOff * want.mass);
-  EXPECT_NEAR(s.energy, want.energy, kRoundOff * want.energy);
-  EXPECT_NEAR(s.radial_impulse, want.radial_impulse, kRoundOff * want.radial_impulse);
+  EXPECT_NEAR(s.mass, want.mass, kTransformRoundOff * want.mass);
+  EXPECT_NEAR(s.energy, want.energy, kTransformRoundOff * want.energy);
+  EXPECT_NEAR(s.radial_impulse, want.radial_impulse, kTransformRoundOff * want.radial_impulse);
   for (int a = 0; a < 3; ++a)  // symmetric grid: the vector momentum cancels
-    EXPECT_NEAR(s.momentum[a], 0.0, kRoundOff * want.radial_impulse);
+    EXPECT_NEAR(s.momentum[a], 0.0, kTransformRoundOff * want.radial_impulse);
   double charge = 0.0;
   for (std::size_t c = 0; c < grid.cell_count(); ++c) charge += f.material_mass[2 * c];
   double charge_1d = 0.0;  // the shells of material 0
   for (std::size_t k = 0; p.material[k] == 0; ++k)
-    charge_1d +=
-        p.rho[k] * 4.0 / 3.0 * kPi * (std::pow(p.edges[k + 1], 3) - std::pow(p.edges[k], 3));
-  EXPECT_NEAR(charge, charge_1d, kRoundOff * charge);
+    charge_1d += p.rho[k] * 4.0 / 3.0 * std::numbers::pi *
+                 (std::pow(p.edges[k + 1], 3) - std::pow(p.edges[k], 3));
+  EXPECT_NEAR(charge, charge_1d, kTransformRoundOff * charge);
 }
 
 TEST(SphericalToCartesian, Eighth_model_about_a_grid_corner_holds_an_eighth) {
@@ -121,9 +121,9 @@ TEST(SphericalToCartesian, Eighth_model_about_a_grid_corner_holds_an_eighth) {
   const Profile p = blast_profile(97, 0.58);
   const CartesianFields f = remap_radial_profile(grid, {0, 0, 0}, p.view());
   const Sums s = grid_sums(grid, {0, 0, 0}, f);
-  const RemapTotals want = p.totals(4.0 * kPi);
-  EXPECT_NEAR(s.mass, want.mass / 8.0, kRoundOff * want.mass);
-  EXPECT_NEAR(s.energy, want.energy / 8.0, kRoundOff * want.energy);
+  const RemapTotals want = p.totals(4.0 * std::numbers::pi);
+  EXPECT_NEAR(s.mass, want.mass / 8.0, kTransformRoundOff * want.mass);
+  EXPECT_NEAR(s.energy, want.energy / 8.0, kTransformRoundOff * want.energy);
 }
 
 TEST(SphericalToCartesian, Field_is_radially_symmetric_across_directions) {
@@ -186,10 +186,11 @@ TEST(SphericalToCartesian, Cylindrical_profile_on_a_2D_grid_conserves) {
   const Profile p = blast_profile(71, 0.45);
   const CartesianFields f = remap_radial_profile(grid, {0.02, -0.01, 0.0}, p.view());
   const Sums s = grid_sums(grid, {0.02, -0.01, 0.005}, f);
-  const RemapTotals want = p.totals(2.0 * kPi);
-  EXPECT_NEAR(s.mass, want.mass * 0.01, kRoundOff * want.mass * 0.01);
-  EXPECT_NEAR(s.energy, want.energy * 0.01, kRoundOff * want.energy * 0.01);
-  EXPECT_NEAR(s.radial_impulse, want.radial_impulse * 0.01, kRoundOff * want.radial_impulse * 0.01);
+  const RemapTotals want = p.totals(2.0 * std::numbers::pi);
+  EXPECT_NEAR(s.mass, want.mass * 0.01, kTransformRoundOff * want.mass * 0.01);
+  EXPECT_NEAR(s.energy, want.energy * 0.01, kTransformRoundOff * want.energy * 0.01);
+  EXPECT_NEAR(s.radial_impulse, want.radial_impulse * 0.01,
+              kTransformRoundOff * want.radial_impulse * 0.01);
 }
 
 TEST(SphericalToCartesian, One_dimensional_grid_is_an_error) {

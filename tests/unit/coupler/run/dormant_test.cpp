@@ -29,15 +29,17 @@ std::string tube(double threshold, bool pulse, double end = 1.0e-3) {
   return text;
 }
 
-void serve_fdm(zmq::context_t& context, const std::string& endpoint, const std::string& name) {
+void serve_dormant_fdm(zmq::context_t& context, const std::string& endpoint,
+                       const std::string& name) {
   fdm::serve(
       context,
       {.endpoint = endpoint, .name = name, .idle_timeout = std::chrono::milliseconds(10000)});
 }
 
-testing::StillMpm* g_mpm = nullptr;  // the stand-in a thread serves (ServeFunction has no state)
-void serve_mpm(zmq::context_t& context, const std::string& endpoint, const std::string&) {
-  testing::serve_still_mpm(context, endpoint, *g_mpm);
+testing::StillMpm* g_dormant_mpm =
+    nullptr;  // the stand-in a thread serves (ServeFunction has no state)
+void serve_dormant_mpm(zmq::context_t& context, const std::string& endpoint, const std::string&) {
+  testing::serve_still_mpm(context, endpoint, *g_dormant_mpm);
 }
 
 struct Run {
@@ -49,13 +51,13 @@ struct Run {
 Run run(const std::string& text, testing::StillMpm& mpm, const std::string& name,
         std::chrono::milliseconds keep_alive = std::chrono::milliseconds(1000)) {
   mpm.cell_volume = 0.025 * 0.01 * 0.01;
-  g_mpm = &mpm;
+  g_dormant_mpm = &mpm;
   zmq::context_t context;
   cosim::Hub hub(context, "inproc://coupler-dormant-test", {});
   const auto scene = config::parse_scene(text, name + ".yaml");
   std::vector<std::unique_ptr<SolverHandle>> solvers;
-  solvers.push_back(start_thread("fdm", serve_fdm, context, hub.endpoint()));
-  solvers.push_back(start_thread("mpm", serve_mpm, context, hub.endpoint()));
+  solvers.push_back(start_thread("fdm", serve_dormant_fdm, context, hub.endpoint()));
+  solvers.push_back(start_thread("mpm", serve_dormant_mpm, context, hub.endpoint()));
   Run result;
   result.out = std::filesystem::temp_directory_path() / ("mpfd-coupler-dormant-" + name);
   std::filesystem::remove_all(result.out);

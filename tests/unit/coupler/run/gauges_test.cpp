@@ -33,7 +33,7 @@ std::string tube(const std::string& gauge_interval) {
          "  - {name: c, position: [0.9, 0.005, 0.005]}\n";
 }
 
-std::filesystem::path fresh_dir(const std::string& name) {
+std::filesystem::path fresh_gauges_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("mpfd-coupler-gauges-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -76,7 +76,7 @@ TEST(CoupledGauges, Each_point_belongs_to_the_solver_whose_zone_holds_it) {
 
 TEST(CoupledGauges, A_step_asks_each_owner_and_the_histories_use_the_standalone_layout) {
   const auto scene = config::parse_scene(tube(""), "tube.yaml");
-  const auto out = fresh_dir("every-step");
+  const auto out = fresh_gauges_dir("every-step");
   CoupledGauges gauges(scene, out);
   cosim::Message fdm, mpm;
   fdm.header.mutable_exchange()->add_operations()->mutable_propose_dt();
@@ -128,7 +128,7 @@ TEST(CoupledGauges, A_step_asks_each_owner_and_the_histories_use_the_standalone_
 // the sleeping MPM gets nothing.
 TEST(CoupledGauges, The_FDM_samples_every_gauge_while_the_MPM_zone_sleeps) {
   const auto scene = config::parse_scene(tube(""), "tube.yaml");
-  CoupledGauges gauges(scene, fresh_dir("dormant"));
+  CoupledGauges gauges(scene, fresh_gauges_dir("dormant"));
   cosim::Message fdm, mpm;
   gauges.add(false, 0.0, GaugeSamplers::fdm_only_mpm_asleep, fdm, mpm);
   ASSERT_EQ(fdm.header.exchange().operations_size(), 1);
@@ -149,7 +149,7 @@ TEST(CoupledGauges, A_following_gauge_is_sampled_by_the_MPM_or_recorded_as_NaN) 
   text.replace(text.find("[0.9, 0.005, 0.005]}"), 20, "[0.9, 0.005, 0.005], follow: material}");
   const auto scene = config::parse_scene(text, "tube.yaml");
   EXPECT_EQ(gauge_owner(scene, scene.gauges[2]), "mpm");
-  const auto out = fresh_dir("following");
+  const auto out = fresh_gauges_dir("following");
   CoupledGauges gauges(scene, out);
   EXPECT_EQ(gauges.listing()[2]["follow"], "material");
   EXPECT_EQ(gauges.listing()[0]["follow"], "point");
@@ -187,7 +187,7 @@ TEST(CoupledGauges, A_following_gauge_is_sampled_by_the_MPM_or_recorded_as_NaN) 
 // AFDMP's phases 1 and 3 run the MPM over the whole domain: it samples every gauge.
 TEST(CoupledGauges, The_MPM_samples_every_gauge_in_an_MPM_phase) {
   const auto scene = config::parse_scene(tube(""), "tube.yaml");
-  CoupledGauges gauges(scene, fresh_dir("mpm-phase"));
+  CoupledGauges gauges(scene, fresh_gauges_dir("mpm-phase"));
   cosim::Message fdm, mpm;
   gauges.add(false, 0.0, GaugeSamplers::mpm_only, fdm, mpm);
   EXPECT_EQ(fdm.header.exchange().operations_size(), 0);
@@ -202,7 +202,7 @@ TEST(CoupledGauges, The_MPM_samples_every_gauge_in_an_MPM_phase) {
 // AFDMP's 1D spherical start knows pressure only; it records it on the same schedule.
 TEST(CoupledGauges, A_stage_without_solvers_records_pressure_when_due) {
   const auto scene = config::parse_scene(tube(", gauge_interval: 1.0e-4"), "tube.yaml");
-  const auto out = fresh_dir("pressure-only");
+  const auto out = fresh_gauges_dir("pressure-only");
   CoupledGauges gauges(scene, out);
   const std::vector<double> p = {1.0e5, 2.0e5, 3.0e5};
   for (int n = 0; n <= 10; ++n)
@@ -219,7 +219,7 @@ TEST(CoupledGauges, A_scene_with_a_structure_records_the_MPM_s_Mises_stress) {
   steel.name = "steel";
   steel.strength = config::ElasticStrength{};
   scene.materials.push_back(steel);
-  const auto out = fresh_dir("mises");
+  const auto out = fresh_gauges_dir("mises");
   CoupledGauges gauges(scene, out);
   cosim::Message fdm, mpm;
   gauges.add(false, 0.0, GaugeSamplers::owners, fdm, mpm);
@@ -243,7 +243,7 @@ TEST(CoupledGauges, A_scene_with_a_structure_records_the_MPM_s_Mises_stress) {
 
 TEST(CoupledGauges, Samples_follow_the_gauge_interval) {
   const auto scene = config::parse_scene(tube(", gauge_interval: 1.0e-4"), "tube.yaml");
-  CoupledGauges gauges(scene, fresh_dir("interval"));
+  CoupledGauges gauges(scene, fresh_gauges_dir("interval"));
   int sampled = 0;
   // Steps of 0.3e-4 s: samples at 0, then at the first step end past 1e-4, 2e-4, ...
   for (int n = 0; n <= 10; ++n) {
@@ -258,7 +258,7 @@ TEST(CoupledGauges, Samples_follow_the_gauge_interval) {
 TEST(CoupledGauges, A_scene_without_gauges_writes_no_file_and_asks_nothing) {
   auto scene = config::parse_scene(tube(""), "tube.yaml");
   scene.gauges.clear();
-  const auto out = fresh_dir("none");
+  const auto out = fresh_gauges_dir("none");
   CoupledGauges gauges(scene, out);
   cosim::Message fdm, mpm;
   gauges.add(false, 0.0, GaugeSamplers::owners, fdm, mpm);

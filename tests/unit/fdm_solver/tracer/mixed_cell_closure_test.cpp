@@ -18,7 +18,7 @@ namespace {
 namespace tm = eos::test_materials;
 
 // The brief's acceptance tolerance for (3-24) and (3-28); the solver stops at 1e-12.
-constexpr double kTolerance = 1e-10;
+constexpr double kClosureTol = 1e-10;
 
 const eos::AnyEos kAir = tm::kAir;
 const eos::AnyEos kGamma3 = eos::IdealGas{.gamma = 3.0};
@@ -29,10 +29,10 @@ void expect_equilibrium(const eos::AnyEos& eos1, const eos::AnyEos& eos2, const 
   ASSERT_EQ(s.status, ClosureStatus::converged);
   const double p1 = eos::pressure(eos1, s.rho1, s.e1);
   const double p2 = eos::pressure(eos2, s.rho2, s.e2);
-  EXPECT_NEAR(p1, p2, kTolerance * std::max(std::abs(p1), std::abs(p2)));  // T (3-24)
-  EXPECT_NEAR(in.theta1 * s.rho1 + (1.0 - in.theta1) * s.rho2, in.rho_c,   // T (3-28)
-              kTolerance * in.rho_c);
-  EXPECT_NEAR(s.pressure, p1, kTolerance * std::abs(p1));
+  EXPECT_NEAR(p1, p2, kClosureTol * std::max(std::abs(p1), std::abs(p2)));  // T (3-24)
+  EXPECT_NEAR(in.theta1 * s.rho1 + (1.0 - in.theta1) * s.rho2, in.rho_c,    // T (3-28)
+              kClosureTol * in.rho_c);
+  EXPECT_NEAR(s.pressure, p1, kClosureTol * std::abs(p1));
 }
 
 TEST(MixedCellClosure, TwoIdealGasesSatisfyEq324AndEq328AndTheAnalyticDensities) {
@@ -49,7 +49,7 @@ TEST(MixedCellClosure, TwoIdealGasesSatisfyEq324AndEq328AndTheAnalyticDensities)
         // (g1 - 1) rho1 e1 = (g2 - 1) rho2 e2 with (3-28): rho1 = b rho_c / (a theta2 + b theta1)
         const double a = 0.4 * in.e1;
         const double b = 2.0 * e2;
-        EXPECT_NEAR(s.rho1, b * rho_c / (a * (1.0 - theta1) + b * theta1), kTolerance * s.rho1);
+        EXPECT_NEAR(s.rho1, b * rho_c / (a * (1.0 - theta1) + b * theta1), kClosureTol * s.rho1);
         EXPECT_EQ(s.e1, in.e1);  // no cell_energy: energies untouched
       }
 }
@@ -120,7 +120,7 @@ TEST(MixedCellClosure, NeverNaNFor10000RandomPhysicalInputs) {
     if (s.status == ClosureStatus::converged) {
       const double p1 = eos::pressure(kTnt, s.rho1, s.e1);
       const double p2 = eos::pressure(kAir, s.rho2, s.e2);
-      EXPECT_NEAR(p1, p2, kTolerance * std::max(std::abs(p1), std::abs(p2))) << "input " << n;
+      EXPECT_NEAR(p1, p2, kClosureTol * std::max(std::abs(p1), std::abs(p2))) << "input " << n;
     }
   }
   EXPECT_EQ(fallbacks, 0);  // physical states always have an equilibrium here

@@ -13,7 +13,7 @@ namespace mpfd::fdm {
 namespace {
 
 // Interpolation reorders a handful of products of O(1) numbers: round-off only.
-constexpr double kTolerance = 1e-12;
+constexpr double kStencilTol = 1e-12;
 
 /// A field that is a polynomial of degree <= 2 in each coordinate separately
 /// (x^2 y^2 z^2 included): what the tensor-product stencil reproduces.
@@ -67,7 +67,7 @@ void expect_reproduces_tensor_quadratics(const grid::UniformGrid& g) {
         EXPECT_EQ(got[a], 0.0);
         continue;
       }
-      EXPECT_NEAR(got[a], f[a](x), kTolerance * 10.0) << "axis " << a << " sample " << sample;
+      EXPECT_NEAR(got[a], f[a](x), kStencilTol * 10.0) << "axis " << a << " sample " << sample;
     }
   }
 }
@@ -90,7 +90,7 @@ TEST(QuadraticInterpolation, TwoCellAxisReproducesLinearField) {
   const std::vector<double> u{3.0 + 2.0 * 0.25, 3.0 + 2.0 * 0.75};  // u = 3 + 2 x
   const VelocityView v{{u, {}, {}}};
   for (const double x : {0.0, 0.1, 0.25, 0.6, 0.99})
-    EXPECT_NEAR(interpolate_velocity(g, v, {x, 0.5, 0.5})[0], 3.0 + 2.0 * x, kTolerance);
+    EXPECT_NEAR(interpolate_velocity(g, v, {x, 0.5, 0.5})[0], 3.0 + 2.0 * x, kStencilTol);
 }
 
 // Doc and code must not drift: (3-11) as documented in quadratic_stencil.hpp,
@@ -117,8 +117,8 @@ TEST(QuadraticInterpolation, Eq311AsPrintedDoesNotReproduceLinearFieldButKernelD
     return (v1 - 2.0 * v2 + v3) / 2.0 * xi * xi + (v3 - v2) / 2.0 * xi + v2;
   };
   const std::array<double, 3> w = quadratic_weights(0.5);
-  EXPECT_NEAR(w[0] * -1.0 + w[1] * 0.0 + w[2] * 1.0, 0.5, kTolerance);  // v = xi
-  EXPECT_NEAR(printed(-1.0, 0.0, 1.0, 0.5), 0.25, kTolerance);
+  EXPECT_NEAR(w[0] * -1.0 + w[1] * 0.0 + w[2] * 1.0, 0.5, kStencilTol);  // v = xi
+  EXPECT_NEAR(printed(-1.0, 0.0, 1.0, 0.5), 0.25, kStencilTol);
 }
 
 TEST(QuadraticInterpolation, EdgeStencilIsOneSidedInsideTheDomain) {
@@ -128,7 +128,7 @@ TEST(QuadraticInterpolation, EdgeStencilIsOneSidedInsideTheDomain) {
   EXPECT_EQ(upper.cell, (std::array<int, 3>{2, 3, 4}));
   const AxisStencil inner = axis_stencil(2.7, 5);
   EXPECT_EQ(inner.cell, (std::array<int, 3>{1, 2, 3}));
-  EXPECT_NEAR(inner.weight[1], 1.0 - 0.2 * 0.2, kTolerance);  // xi = 2.7 - 2.5, T (3-9)
+  EXPECT_NEAR(inner.weight[1], 1.0 - 0.2 * 0.2, kStencilTol);  // xi = 2.7 - 2.5, T (3-9)
 }
 
 }  // namespace

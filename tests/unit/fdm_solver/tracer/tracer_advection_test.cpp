@@ -18,14 +18,14 @@ namespace {
 using ::testing::HasSubstr;
 
 // Positions are O(1) m sums of a few terms: round-off only.
-constexpr double kTolerance = 1e-12;
+constexpr double kAdvectionTol = 1e-12;
 
-constexpr TracerBoundaries kAllOutflow{TracerFace::outflow, TracerFace::outflow,
-                                       TracerFace::outflow, TracerFace::outflow,
-                                       TracerFace::outflow, TracerFace::outflow};
-constexpr TracerBoundaries kAllReflect{TracerFace::reflect, TracerFace::reflect,
-                                       TracerFace::reflect, TracerFace::reflect,
-                                       TracerFace::reflect, TracerFace::reflect};
+constexpr TracerBoundaries kOutflowFaces{TracerFace::outflow, TracerFace::outflow,
+                                         TracerFace::outflow, TracerFace::outflow,
+                                         TracerFace::outflow, TracerFace::outflow};
+constexpr TracerBoundaries kReflectFaces{TracerFace::reflect, TracerFace::reflect,
+                                         TracerFace::reflect, TracerFace::reflect,
+                                         TracerFace::reflect, TracerFace::reflect};
 
 struct UniformField {
   std::array<std::vector<double>, 3> u;
@@ -45,7 +45,7 @@ void expect_n_per_cell(const grid::UniformGrid& g, int n) {
   for (std::size_t c = 0; c < g.cell_count(); ++c) EXPECT_EQ(bins.count(c, 0), expected);
   for (const double v : t.volume) volume += v;
   EXPECT_NEAR(volume, g.cell_volume() * static_cast<double>(g.cell_count()),
-              kTolerance * volume);  // T (3-21) at seeding
+              kAdvectionTol * volume);  // T (3-21) at seeding
 }
 
 TEST(TracerSeeding, PutsNPerActiveAxisInEveryCell) {
@@ -70,12 +70,12 @@ TEST(TracerAdvection, UniformVelocityMovesEveryTracerByUDt) {
   const TracerSet before = t;
   const grid::Vec3 u{30.0, -20.0, 10.0};
   const double dt = 1e-4;  // moves <= 3 mm < 25 mm to the nearest face: nobody leaves
-  const AdvectionReport r = advect_tracers(g, UniformField(g, u).view(), dt, kAllReflect, t);
+  const AdvectionReport r = advect_tracers(g, UniformField(g, u).view(), dt, kReflectFaces, t);
   ASSERT_EQ(r.removed, 0u);
   ASSERT_EQ(t.size(), before.size());
   for (std::size_t i = 0; i < t.size(); ++i)
     for (int a = 0; a < 3; ++a)
-      EXPECT_NEAR(t.position[a][i], before.position[a][i] + u[a] * dt, kTolerance);
+      EXPECT_NEAR(t.position[a][i], before.position[a][i] + u[a] * dt, kAdvectionTol);
 }
 
 TEST(TracerAdvection, RigidTranslationByOneCellShiftsCountsAndMaterials) {
@@ -87,7 +87,7 @@ TEST(TracerAdvection, RigidTranslationByOneCellShiftsCountsAndMaterials) {
   const UniformField field(g, {0.1 / 4e-3, 0.0, 0.0});  // one cell in 4 steps of 1 ms
   std::size_t removed = 0;
   for (int step = 0; step < 4; ++step)
-    removed += advect_tracers(g, field.view(), 1e-3, kAllOutflow, t).removed;
+    removed += advect_tracers(g, field.view(), 1e-3, kOutflowFaces, t).removed;
   EXPECT_EQ(removed, 4u * 4u);  // the last column (4 tracers in each of 4 cells)
   TracerBins bins;
   bins.rebuild(g, t, 2);
@@ -105,7 +105,7 @@ TEST(TracerAdvection, OutflowFaceRemovesAndCountsLeavingTracers) {
   TracerSet t = seed_from_materials(g, std::vector<int>(4, 0), 4);  // at 0.125, 0.375, ...
   // 0.5 m to the right: the two tracers beyond x = 3.5 (3.625, 3.875) leave through x = 4.
   const AdvectionReport r =
-      advect_tracers(g, UniformField(g, {5.0, 0, 0}).view(), 0.1, kAllOutflow, t);
+      advect_tracers(g, UniformField(g, {5.0, 0, 0}).view(), 0.1, kOutflowFaces, t);
   EXPECT_EQ(r.removed, 2u);
   EXPECT_EQ(t.size(), 14u);
   for (const double x : t.position[0]) EXPECT_LT(x, 4.0);
@@ -117,14 +117,14 @@ TEST(TracerAdvection, WallFaceReflectsTracersBackInside) {
   t.add({3.9, 0.5, 0.5}, 0, 1.0);
   t.add({0.05, 0.5, 0.5}, 0, 1.0);
   const UniformField right(g, {2.0, 0, 0});
-  advect_tracers(g, right.view(), 0.1, kAllReflect, t);  // 3.9 + 0.2 = 4.1 -> 3.9
-  EXPECT_NEAR(t.position[0][0], 3.9, kTolerance);
+  advect_tracers(g, right.view(), 0.1, kReflectFaces, t);  // 3.9 + 0.2 = 4.1 -> 3.9
+  EXPECT_NEAR(t.position[0][0], 3.9, kAdvectionTol);
   const UniformField left(g, {-2.0, 0, 0});
-  advect_tracers(g, left.view(), 0.1, kAllReflect, t);  // 0.25 - 0.2 -> 0.05; 3.9 -> 3.7
-  advect_tracers(g, left.view(), 0.1, kAllReflect, t);  // 0.05 - 0.2 = -0.15 -> 0.15
+  advect_tracers(g, left.view(), 0.1, kReflectFaces, t);  // 0.25 - 0.2 -> 0.05; 3.9 -> 3.7
+  advect_tracers(g, left.view(), 0.1, kReflectFaces, t);  // 0.05 - 0.2 = -0.15 -> 0.15
   EXPECT_EQ(t.size(), 2u);
-  EXPECT_NEAR(t.position[0][1], 0.15, kTolerance);
-  EXPECT_NEAR(t.position[0][0], 3.5, kTolerance);
+  EXPECT_NEAR(t.position[0][1], 0.15, kAdvectionTol);
+  EXPECT_NEAR(t.position[0][0], 3.5, kAdvectionTol);
 }
 
 TEST(TracerAdvection, NonFiniteVelocityThrowsInsteadOfLosingTracers) {
@@ -133,7 +133,7 @@ TEST(TracerAdvection, NonFiniteVelocityThrowsInsteadOfLosingTracers) {
   UniformField field(g, {1.0, 0, 0});
   field.u[0][2] = std::nan("");
   try {
-    advect_tracers(g, field.view(), 0.1, kAllOutflow, t);
+    advect_tracers(g, field.view(), 0.1, kOutflowFaces, t);
     FAIL() << "expected mpfd::Error";
   } catch (const Error& e) {
     EXPECT_THAT(e.what(), HasSubstr("non-finite"));

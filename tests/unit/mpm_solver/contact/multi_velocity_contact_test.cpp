@@ -8,7 +8,7 @@ namespace mpfd::mpm::contact {
 namespace {
 
 // Round-off tolerance, relative to the O(1..10) momenta used here.
-constexpr double kTol = 1e-13;
+constexpr double kContactTol = 1e-13;
 
 template <int Dim>
 struct Node {
@@ -48,7 +48,7 @@ TEST(MultiVelocityContact, ApproachingBodiesGetOneNormalVelocityAndKeepTotalMome
   std::vector<Vec<3>> change(2);
   ASSERT_TRUE(contact_momentum_changes<3>(node.view(), {0.25, 0}, change));
   node.apply(change);
-  EXPECT_NEAR((node.velocity(0) - node.velocity(1)).dot(n), 0, kTol);
+  EXPECT_NEAR((node.velocity(0) - node.velocity(1)).dot(n), 0, kContactTol);
   EXPECT_NEAR((node.total() - total_before).norm(), 0, 1e-15 * total_before.norm() * 4);
 }
 
@@ -74,12 +74,12 @@ TEST(MultiVelocityContact, SlidingTangentialImpulseIsMuTimesNormalImpulse) {
   std::vector<Vec<3>> change(2);
   ASSERT_TRUE(contact_momentum_changes<3>(node.view(), {mu, 0}, change));
   const double normal_impulse = std::abs(change[0].dot(n));
-  EXPECT_NEAR(tangential(change[0], n).norm(), mu * normal_impulse, kTol * normal_impulse);
+  EXPECT_NEAR(tangential(change[0], n).norm(), mu * normal_impulse, kContactTol * normal_impulse);
   node.apply(change);
   // Friction slows the slip but never reverses it.
   const Vec<3> slip_after = tangential(node.velocity(0) - node.velocity(1), n);
   EXPECT_LT(slip_after.norm(), slip_before.norm());
-  EXPECT_NEAR(slip_after.normalized().dot(slip_before.normalized()), 1, kTol);
+  EXPECT_NEAR(slip_after.normalized().dot(slip_before.normalized()), 1, kContactTol);
 }
 
 TEST(MultiVelocityContact, StickWithinTheFrictionLimitGivesOneCommonVelocity) {
@@ -88,8 +88,8 @@ TEST(MultiVelocityContact, StickWithinTheFrictionLimitGivesOneCommonVelocity) {
   std::vector<Vec<3>> change(2);
   ASSERT_TRUE(contact_momentum_changes<3>(node.view(), {10.0, 0}, change));
   node.apply(change);
-  EXPECT_NEAR((node.velocity(0) - centre_of_mass).norm(), 0, kTol);
-  EXPECT_NEAR((node.velocity(1) - centre_of_mass).norm(), 0, kTol);
+  EXPECT_NEAR((node.velocity(0) - centre_of_mass).norm(), 0, kContactTol);
+  EXPECT_NEAR((node.velocity(1) - centre_of_mass).norm(), 0, kContactTol);
 }
 
 TEST(MultiVelocityContact, FrictionlessContactKeepsEachTangentialVelocity) {
@@ -100,8 +100,8 @@ TEST(MultiVelocityContact, FrictionlessContactKeepsEachTangentialVelocity) {
   std::vector<Vec<3>> change(2);
   ASSERT_TRUE(contact_momentum_changes<3>(node.view(), {0.0, 0}, change));
   node.apply(change);
-  EXPECT_NEAR((tangential(node.velocity(0), n) - tangential_a).norm(), 0, kTol);
-  EXPECT_NEAR((tangential(node.velocity(1), n) - tangential_b).norm(), 0, kTol);
+  EXPECT_NEAR((tangential(node.velocity(0), n) - tangential_a).norm(), 0, kContactTol);
+  EXPECT_NEAR((tangential(node.velocity(1), n) - tangential_b).norm(), 0, kContactTol);
 }
 
 // T (2-25) ... (2-32) written out for two bodies as printed, with f^{B,c} = -f^{A,c}.
@@ -137,10 +137,10 @@ TEST(MultiVelocityContact, MomentumUpdateMatchesTheThesisFormulasForTwoBodies) {
     const ThesisStep expected =
         thesis_two_body_step(node.mass[0], node.mass[1], node.momentum[0], node.momentum[1],
                              force[0], force[1], n, dt, mu);
-    EXPECT_NEAR((new_momentum[0] - expected.momentum_a).norm(), 0, kTol) << "mu " << mu;
-    EXPECT_NEAR((new_momentum[1] - expected.momentum_b).norm(), 0, kTol) << "mu " << mu;
-    EXPECT_NEAR((contact_force[0] - expected.force_a).norm(), 0, kTol / dt) << "mu " << mu;
-    EXPECT_NEAR((contact_force[1] + expected.force_a).norm(), 0, kTol / dt) << "mu " << mu;
+    EXPECT_NEAR((new_momentum[0] - expected.momentum_a).norm(), 0, kContactTol) << "mu " << mu;
+    EXPECT_NEAR((new_momentum[1] - expected.momentum_b).norm(), 0, kContactTol) << "mu " << mu;
+    EXPECT_NEAR((contact_force[0] - expected.force_a).norm(), 0, kContactTol / dt) << "mu " << mu;
+    EXPECT_NEAR((contact_force[1] + expected.force_a).norm(), 0, kContactTol / dt) << "mu " << mu;
   }
 }
 
@@ -154,10 +154,10 @@ TEST(MultiVelocityContact, ThreeBodiesMeetTheNormalBodyAsOneAndKeepTheirRelative
   std::vector<Vec<2>> change(3);
   ASSERT_TRUE(contact_momentum_changes<2>(node.view(), {0.3, 0}, change));
   node.apply(change);
-  EXPECT_NEAR((node.total() - total_before).norm(), 0, kTol);
-  EXPECT_NEAR((node.velocity(1) - node.velocity(2) - relative_before).norm(), 0, kTol);
+  EXPECT_NEAR((node.total() - total_before).norm(), 0, kContactTol);
+  EXPECT_NEAR((node.velocity(1) - node.velocity(2) - relative_before).norm(), 0, kContactTol);
   const Vec<2> others = (node.momentum[1] + node.momentum[2]) / 3.0;
-  EXPECT_NEAR((node.velocity(0) - others).dot(n), 0, kTol);
+  EXPECT_NEAR((node.velocity(0) - others).dot(n), 0, kContactTol);
 }
 
 TEST(MultiVelocityContact, OneBodyOrAMasslessNormalBodyIsNoContact) {

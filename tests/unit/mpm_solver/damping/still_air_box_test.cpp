@@ -13,11 +13,11 @@
 namespace mpfd::mpm::damping {
 namespace {
 
-constexpr int kCells = 4;            // per axis
-constexpr int kNodes = kCells + 1;   // per axis
-constexpr double kCellSize = 0.01;   // m
-constexpr double kDensity = 1.225;   // kg/m^3, air (T (2-59) table)
-constexpr double kSoundSpeed = 340;  // m/s
+constexpr int kCells = 4;              // per axis
+constexpr int kNodes = kCells + 1;     // per axis
+constexpr double kBoxCellSize = 0.01;  // m
+constexpr double kDensity = 1.225;     // kg/m^3, air (T (2-59) table)
+constexpr double kSoundSpeed = 340;    // m/s
 constexpr double kQs = 0.1;
 
 int node_index(int i, int j, int k) {
@@ -78,8 +78,8 @@ struct Box {
 
 TEST(StillAirBox, ShearNoiseDiesWhileMomentumAndEnergyBoundsHold) {
   Box box;
-  const double cell_mass = kDensity * std::pow(kCellSize, 3);
-  box.alpha = shear_damping_coefficient<3>(cell_mass, kSoundSpeed, kCellSize, kQs);
+  const double cell_mass = kDensity * std::pow(kBoxCellSize, 3);
+  box.alpha = shear_damping_coefficient<3>(cell_mass, kSoundSpeed, kBoxCellSize, kQs);
   Box::for_each_cell([&](int i, int j, int k) {
     for (int c = 0; c < 8; ++c) box.mass[corner_node(i, j, k, c)] += cell_mass / 8;
   });
@@ -89,7 +89,7 @@ TEST(StillAirBox, ShearNoiseDiesWhileMomentumAndEnergyBoundsHold) {
 
   // Every node here has Σ_cells 2^3 α_s / m_I = 64 α_s / m_cell; a CFL 0.5 step is
   // 0.5 Δx / c, well inside the energy bound dt <= 2 m_I / Σ 2^3 α_s = Δx / (8 Q_s c).
-  const double dt = 0.5 * kCellSize / kSoundSpeed;
+  const double dt = 0.5 * kBoxCellSize / kSoundSpeed;
   ASSERT_LE(dt * 64 * box.alpha / cell_mass, 2.0);
   const Vec<3> momentum0 = box.momentum();
   const double shear0 = box.shear_measure();

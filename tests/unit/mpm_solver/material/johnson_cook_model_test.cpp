@@ -18,7 +18,7 @@ using test_support::PointStorage;
 using test_support::ThesisMetal;
 
 // Round-off tolerance of a quantity computed in a few operations from exact inputs.
-constexpr double kRoundOff = 1e-12;
+constexpr double kJcRoundOff = 1e-12;
 
 /// T (2-64) written out independently of johnson_cook_flow_stress.hpp (docs/STYLE: doc and code
 /// must not drift).
@@ -82,7 +82,7 @@ TEST(JohnsonCook, Uniaxial_strain_is_elastic_to_the_HEL_then_follows_A_plus_B_ep
       const double difference = std::abs(d.point.s(0, 0) - d.point.s(1, 1));
       if (2.0 * g * std::abs(strain) < p.a * (1.0 - 1e-12)) {
         EXPECT_EQ(d.point.eps, 0.0) << "strain " << strain;
-        EXPECT_NEAR(difference, 2.0 * g * std::abs(strain), kRoundOff * difference);
+        EXPECT_NEAR(difference, 2.0 * g * std::abs(strain), kJcRoundOff * difference);
         continue;
       }
       if (!yielded) {
@@ -94,7 +94,7 @@ TEST(JohnsonCook, Uniaxial_strain_is_elastic_to_the_HEL_then_follows_A_plus_B_ep
         EXPECT_NEAR(-d.point.stress()(0, 0), hel, 0.01 * hel);
       }
       const double flow = p.a + p.b * std::pow(d.point.eps, p.n);
-      EXPECT_NEAR(difference, flow, kRoundOff * flow) << "strain " << strain;
+      EXPECT_NEAR(difference, flow, kJcRoundOff * flow) << "strain " << strain;
       // Prandtl-Reuss on this proportional path: eps_p = 2/3 (|eps| - sigma_y(eps_p) / (2G)).
       const double expected = bisect_fixed_point(
           [&](double x) {
@@ -123,12 +123,12 @@ TEST(JohnsonCook, Pure_shear_yields_at_tau_equal_sigma_y_over_root_3_and_follows
       EXPECT_EQ(d.point.s(0, 0), 0.0);
       if (std::sqrt(3.0) * g * gamma < p.a * (1.0 - 1e-12)) {
         EXPECT_EQ(d.point.eps, 0.0);
-        EXPECT_NEAR(tau, g * gamma, kRoundOff * tau);
+        EXPECT_NEAR(tau, g * gamma, kJcRoundOff * tau);
         continue;
       }
       const double flow = documented_flow_stress(p, d.point.eps, 0.0, d.point.t);
-      EXPECT_NEAR(tau, flow / std::sqrt(3.0), kRoundOff * tau) << "gamma " << gamma;
-      EXPECT_NEAR(von_mises_stress(d.point.s), flow, kRoundOff * flow);
+      EXPECT_NEAR(tau, flow / std::sqrt(3.0), kJcRoundOff * tau) << "gamma " << gamma;
+      EXPECT_NEAR(von_mises_stress(d.point.s), flow, kJcRoundOff * flow);
       // gamma_p = sqrt(3) eps_p and tau = G (gamma - gamma_p).
       const double expected = bisect_fixed_point(
           [&](double x) {
@@ -163,7 +163,7 @@ TEST(JohnsonCook, Rate_term_scales_the_yield_stress_by_1_plus_C_ln_rate) {
   const double ratio = steady_flow_stress(p, 1e5).first / steady_flow_stress(p, 1e3).first;
   EXPECT_NEAR(ratio, (1.0 + p.c * std::log(1e5)) / (1.0 + p.c * std::log(1e3)), 1e-9);
   // Below the reference rate the log is floored: sigma_y = A.
-  EXPECT_NEAR(steady_flow_stress(p, 0.1, 1e-2).first, p.a, kRoundOff * p.a);
+  EXPECT_NEAR(steady_flow_stress(p, 0.1, 1e-2).first, p.a, kJcRoundOff * p.a);
 }
 
 TEST(JohnsonCook, Thermal_softening_scales_the_yield_stress_by_1_minus_T_star_to_the_m) {
@@ -179,7 +179,7 @@ TEST(JohnsonCook, Thermal_softening_scales_the_yield_stress_by_1_minus_T_star_to
       d.point.t = p.room_temperature + t_star * span;
       for (int i = 0; i < 100; ++i) d.step(test_support::shear(d.rho, 1e-4));
       const double expected = p.a * (1.0 - std::pow(std::clamp(t_star, 0.0, 1.0), m));
-      EXPECT_NEAR(std::sqrt(3.0) * d.point.s(0, 1), expected, kRoundOff * p.a)
+      EXPECT_NEAR(std::sqrt(3.0) * d.point.s(0, 1), expected, kJcRoundOff * p.a)
           << "m " << m << ", T* " << t_star;
     }
   }
@@ -224,7 +224,7 @@ TEST(JohnsonCook, Plastic_work_is_the_integral_of_sigma_y_over_eps_p_and_heats_b
   // gamma = 0.5 of Al-2024: W_p = 4.6e4 J/kg, T rises 47 K (T* = 0.1).
   EXPECT_GT(hot.point.t - heated.room_temperature, 40.0);
   const double softened = documented_flow_stress(heated, hot.point.eps, 0.0, t_before);
-  EXPECT_NEAR(von_mises_stress(hot.point.s), softened, kRoundOff * softened);
+  EXPECT_NEAR(von_mises_stress(hot.point.s), softened, kJcRoundOff * softened);
   EXPECT_LT(hot.point.s(0, 1), 0.92 * cold.point.s(0, 1));
 }
 

@@ -42,19 +42,6 @@ std::vector<v1::Region> transfer_regions() {
   return regions;
 }
 
-/// Advances by `steps` steps of the proposed dt; returns the time reached.
-double run(ServedMpm& served, double& dt, double time, int steps) {
-  for (int s = 0; s < steps; ++s) {
-    cosim::Message exchange;
-    add_advance(exchange, dt, time);
-    add_propose(exchange);
-    const auto reply = served.request(std::move(exchange));
-    time = reply.header.exchange_result().results(0).advanced().time();
-    dt = reply.header.exchange_result().results(1).proposed().stable_dt();
-  }
-  return time;
-}
-
 cosim::Message export_region(ServedMpm& served, const std::string& name) {
   cosim::Message message;
   add_export(message, name);
@@ -159,7 +146,7 @@ TEST(MpmServeFieldTransfer, FieldExportEqualsExportRegionBitForBitForChunkSizes)
   ServedMpm served;
   double dt =
       served.request(setup(blast_text(), transfer_regions())).header.setup_ack().stable_dt();
-  run(served, dt, 0.0, 20);
+  run_steps(served, dt, 0.0, 20);
   std::vector<std::string> names = {"ghost_nodes/internal_energy", "ghost_nodes/mass",
                                     "ghost_nodes/momentum"};
   for (const char* q : kParticleQuantities) names.push_back(std::string("all/") + q);
@@ -194,8 +181,8 @@ TEST(MpmServeFieldTransfer, ParticleImportEqualsInjectParticlesAndTheNextStepsBi
       injected.request(setup(blast_text(), transfer_regions())).header.setup_ack().stable_dt();
   double dt_b =
       imported.request(setup(blast_text(), transfer_regions())).header.setup_ack().stable_dt();
-  double time_a = run(injected, dt_a, 0.0, 10);
-  double time_b = run(imported, dt_b, 0.0, 10);
+  double time_a = run_steps(injected, dt_a, 0.0, 10);
+  double time_b = run_steps(imported, dt_b, 0.0, 10);
   ASSERT_EQ(time_a, time_b);
   const std::size_t before =
       export_region(imported, "all").header.exchange_result().results(0).exported().count();
@@ -232,8 +219,8 @@ TEST(MpmServeFieldTransfer, ParticleImportEqualsInjectParticlesAndTheNextStepsBi
   EXPECT_EQ(totals[3], 0.0);
   EXPECT_NEAR(totals[4], sums[4], 1e-14 * sums[4]);
 
-  time_a = run(injected, dt_a, time_a, 5);
-  time_b = run(imported, dt_b, time_b, 5);
+  time_a = run_steps(injected, dt_a, time_a, 5);
+  time_b = run_steps(imported, dt_b, time_b, 5);
   EXPECT_EQ(time_a, time_b);
   const auto a = export_region(injected, "all");
   const auto b = export_region(imported, "all");
@@ -329,7 +316,7 @@ TEST(MpmServeFieldTransfer, RemoveDiscardReturnsTheCountOnly) {
   ServedMpm served;
   double dt =
       served.request(setup(blast_text(), transfer_regions())).header.setup_ack().stable_dt();
-  run(served, dt, 0.0, 40);
+  run_steps(served, dt, 0.0, 40);
   const auto all = export_region(served, "all");
   const auto x = array_of(all, "all", "position");
   std::uint64_t outside = 0;  // mpm_zone: cells x in [4, 12), x in [0.25, 0.75)
@@ -351,7 +338,7 @@ TEST(MpmServeFieldTransfer, FluidAndFsiParticleRegionsPartitionTheZone) {
   ServedMpm served;
   double dt =
       served.request(setup(blast_text(), transfer_regions())).header.setup_ack().stable_dt();
-  run(served, dt, 0.0, 20);
+  run_steps(served, dt, 0.0, 20);
   const auto fields = export_fields(served, {"fluid/id", "fsi/id"}, 1000);
   auto fluid = array_of<std::uint64_t>(fields, "fluid", "id");
   auto fsi = array_of<std::uint64_t>(fields, "fsi", "id");

@@ -42,27 +42,6 @@ Totals totals_of(const cosim::Message& message, const std::string& group) {
   return t;
 }
 
-std::vector<v1::Region> regions_with_all() {
-  auto regions = cfdmp_regions();
-  regions.push_back(region(
-      "all", v1::REGION_KIND_PARTICLES, {0, 0, 0}, {16, 16, 1},
-      {"id", "position", "velocity", "mass", "volume", "internal_energy", "material", "stress"}));
-  return regions;
-}
-
-/// Advances the served zone by `steps` steps of its proposed dt; returns the time.
-double run(ServedMpm& served, double& dt, double time, int steps) {
-  for (int s = 0; s < steps; ++s) {
-    cosim::Message exchange;
-    add_advance(exchange, dt, time);
-    add_propose(exchange);
-    const auto reply = served.request(std::move(exchange));
-    time = reply.header.exchange_result().results(0).advanced().time();
-    dt = reply.header.exchange_result().results(1).proposed().stable_dt();
-  }
-  return time;
-}
-
 cosim::Message export_all() {
   cosim::Message message;
   add_export(message, "all");
@@ -88,7 +67,7 @@ TEST(MpmServeParticles, RemovalReturnsWhatLeftAndReinjectionRestoresMassMomentum
   ServedMpm served;
   double dt =
       served.request(setup(blast_text(), regions_with_all())).header.setup_ack().stable_dt();
-  const double time = run(served, dt, 0.0, 40);
+  const double time = run_steps(served, dt, 0.0, 40);
   const Totals before = totals_of(served.request(export_all()), "all");
 
   cosim::Message remove;
@@ -146,7 +125,7 @@ TEST(MpmServeParticles, RemovalReturnsWhatLeftAndReinjectionRestoresMassMomentum
   const auto gone = served.request(std::move(by_id));
   EXPECT_EQ(array_of<std::uint64_t>(gone, "gone", "id"), two);
   // The zone goes on stepping with the injected particles.
-  run(served, dt, time, 5);
+  run_steps(served, dt, time, 5);
 }
 
 TEST(MpmServeParticles, OutflowExportIsTheLedgerAndClosesTheMassAudit) {

@@ -18,14 +18,6 @@ namespace {
 using namespace testing;
 using ::testing::HasSubstr;
 
-std::vector<v1::Region> regions_with_all() {
-  auto regions = cfdmp_regions();
-  regions.push_back(region(
-      "all", v1::REGION_KIND_PARTICLES, {0, 0, 0}, {16, 16, 1},
-      {"id", "position", "velocity", "mass", "volume", "internal_energy", "material", "stress"}));
-  return regions;
-}
-
 struct Clock {
   double time = 0.0;
   double dt = 0.0;

@@ -63,6 +63,15 @@ inline std::vector<v1::Region> cfdmp_regions() {
                   "stress"})};
 }
 
+/// The CFDMP regions and "all": every particle with every array an import may carry.
+inline std::vector<v1::Region> regions_with_all() {
+  auto regions = cfdmp_regions();
+  regions.push_back(region(
+      "all", v1::REGION_KIND_PARTICLES, {0, 0, 0}, {16, 16, 1},
+      {"id", "position", "velocity", "mass", "volume", "internal_energy", "material", "stress"}));
+  return regions;
+}
+
 inline cosim::Message setup(const std::string& scene, const std::vector<v1::Region>& regions,
                             const std::string& output_dir = "", bool dormant = false) {
   cosim::Message message;
@@ -178,5 +187,18 @@ class ServedMpm {
   cosim::testing::SolverThread solver_;  // last: joined before the hub closes
   bool stopped_ = false;
 };
+
+/// Advances the served zone by `steps` steps of its proposed dt; returns the time.
+inline double run_steps(ServedMpm& served, double& dt, double time, int steps) {
+  for (int s = 0; s < steps; ++s) {
+    cosim::Message exchange;
+    add_advance(exchange, dt, time);
+    add_propose(exchange);
+    const auto reply = served.request(std::move(exchange));
+    time = reply.header.exchange_result().results(0).advanced().time();
+    dt = reply.header.exchange_result().results(1).proposed().stable_dt();
+  }
+  return time;
+}
 
 }  // namespace mpfd::mpm::testing

@@ -20,7 +20,7 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 /// cfdmp_regions() and "all": every particle of the grid.
-std::vector<v1::Region> regions_with_all() {
+std::vector<v1::Region> regions_with_all_core_arrays() {
   auto regions = cfdmp_regions();
   regions.push_back(region("all", v1::REGION_KIND_PARTICLES, {0, 0, 0}, {16, 16, 1},
                            {"id", "position", "velocity", "mass", "internal_energy"}));
@@ -31,7 +31,8 @@ class ServeTransport : public ::testing::TestWithParam<cosim::Transport> {};
 
 TEST_P(ServeTransport, TwentyStepsGiveTheDirectSolversParticlesBitForBit) {
   ServedMpm served(GetParam());
-  const auto ack = served.request(setup(blast_text(), regions_with_all())).header.setup_ack();
+  const auto ack =
+      served.request(setup(blast_text(), regions_with_all_core_arrays())).header.setup_ack();
   ASSERT_EQ(ack.regions_size(), 4);
   EXPECT_EQ(ack.regions(0).quantities_size(), 3);
 
