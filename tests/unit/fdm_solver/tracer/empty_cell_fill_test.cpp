@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace mpfd::fdm {
 namespace {
 
@@ -47,6 +49,70 @@ TEST(EmptyCellFill, AGridWithoutTracersKeepsItsPreviousMaterials) {
   const MaterialMap before = row.map;
   fill_empty_cells(row.grid, row.bins, row.map, row.queue);
   EXPECT_EQ(row.map.material, before.material);
+}
+
+/// The fill as first written: breadth-first over Index3 neighbours. The
+/// solver's must label every cell the same (ties included).
+void reference_fill(const grid::UniformGrid& grid, const TracerBins& bins, MaterialMap& map) {
+  const std::size_t cells = grid.cell_count();
+  std::vector<std::size_t> queue;
+  for (std::size_t c = 0; c < cells; ++c)
+    if (bins.count(c) == 0) map.material[c] = -2;
+  for (std::size_t c = 0; c < cells; ++c)
+    if (bins.count(c) > 0) queue.push_back(c);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t c = queue[head];
+    int material = map.material[c];
+    if (map.is_mixed(c)) material = map.volume_fraction(c, 1) > map.volume_fraction(c, 0) ? 1 : 0;
+    const grid::Index3 cell = grid.cell_of_index(c);
+    for (int a = 0; a < 3; ++a) {
+      if (!grid.is_active(a)) continue;
+      for (const int step : {-1, 1}) {
+        grid::Index3 next = cell;
+        next[a] += step;
+        if (next[a] < 0 || next[a] >= grid.cells()[a]) continue;
+        const std::size_t n = grid.cell_index(next);
+        if (map.material[n] != -2) continue;
+        map.material[n] = material;
+        queue.push_back(n);
+      }
+    }
+  }
+}
+
+// Random sparse tracers of two materials on 3D and 2D grids, with mixed cells
+// among the sources: every empty cell gets the reference's material.
+TEST(EmptyCellFill, LabelsEveryCellAsTheFirstWrittenBreadthFirstFill) {
+  std::mt19937 random(7);
+  for (const grid::Index3 shape : {grid::Index3{9, 7, 5}, grid::Index3{12, 8, 1}}) {
+    const grid::UniformGrid grid{{0, 0, 0}, {1, 1, 1}, shape};  // cells of 1 m
+    const std::size_t cells = grid.cell_count();
+    for (int trial = 0; trial < 20; ++trial) {
+      TracerSet tracers;
+      std::uniform_real_distribution<double> unit(0.0, 1.0);
+      const int count = 1 + trial * 3;
+      for (int t = 0; t < count; ++t)
+        tracers.add({shape[0] * unit(random), shape[1] * unit(random), shape[2] * unit(random)},
+                    unit(random) < 0.5 ? 0 : 1, 1.0);
+      TracerBins bins;
+      bins.rebuild(grid, tracers, 2);
+      std::vector<int> start(cells, 0);
+      MaterialMap map{start, 2};
+      for (std::size_t c = 0; c < cells; ++c) {
+        if (bins.count(c) == 0) continue;
+        const double theta1 =
+            static_cast<double>(bins.count(c, 1)) / static_cast<double>(bins.count(c));
+        map.material[c] = theta1 == 0.0 ? 0 : theta1 == 1.0 ? 1 : kMixedCell;
+        map.theta[c] = 1.0 - theta1;
+        map.theta[cells + c] = theta1;
+      }
+      MaterialMap expected = map;
+      reference_fill(grid, bins, expected);
+      std::vector<std::size_t> queue;
+      fill_empty_cells(grid, bins, map, queue);
+      EXPECT_EQ(map.material, expected.material) << "trial " << trial;
+    }
+  }
 }
 
 }  // namespace
