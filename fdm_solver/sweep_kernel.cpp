@@ -527,3 +527,6 @@ std::optional<BadCell> sweep_block_twice(Pencil& pencil, const BlockTransfer& t1
 
 }  // namespace MPFD_SWEEP_ISA
 }  // namespace mpfd::fdm
+
+// A unity batch may compile other sources after this one.
+#undef MPFD_SWEEP_ISA

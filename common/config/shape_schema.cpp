@@ -6,7 +6,7 @@
 namespace mpfd::config::schema {
 namespace {
 
-const Fixed<Number, 3> kPoint{Number("m")};
+const Fixed<Number, 3> kShapePoint{Number("m")};
 const Number kLength{"m", Range::above(0)};
 
 std::string parts_rule(std::size_t min_parts) {
@@ -26,15 +26,15 @@ const ShapeTables& tables() {
   static const ShapeTables built = [] {
     ShapeTables t;
     t.box = std::make_shared<Table<Box>>("shape: box", "Axis-aligned box.");
-    t.box->required("lower", &Box::lower, kPoint, "lowest corner")
-        .required("upper", &Box::upper, kPoint, "highest corner")
+    t.box->required("lower", &Box::lower, kShapePoint, "lowest corner")
+        .required("upper", &Box::upper, kShapePoint, "highest corner")
         .rule("upper > lower on every axis",
               [](const Box& b, const Cursor& c) { check_box(b.lower, b.upper, c); });
     t.sphere = std::make_shared<Table<Sphere>>("shape: sphere", "Ball.");
-    t.sphere->required("center", &Sphere::center, kPoint, "centre")
+    t.sphere->required("center", &Sphere::center, kShapePoint, "centre")
         .required("radius", &Sphere::radius, kLength, "radius");
     t.cylinder = std::make_shared<Table<Cylinder>>("shape: cylinder", "Solid circular cylinder.");
-    t.cylinder->required("base", &Cylinder::base, kPoint, "centre of the bottom face")
+    t.cylinder->required("base", &Cylinder::base, kShapePoint, "centre of the bottom face")
         .required("axis", &Cylinder::axis, Fixed<Number, 3>(Number("-")),
                   "direction from the bottom to the top face; any nonzero length")
         .required("radius", &Cylinder::radius, kLength, "radius")

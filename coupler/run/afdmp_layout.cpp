@@ -10,7 +10,6 @@
 namespace mpfd::coupler {
 namespace {
 
-constexpr const char* kAxis[3] = {"x", "y", "z"};
 // A shape's bounding box within this fraction of a cell of a grid line is on it.
 constexpr double kGridLineTolerance = 1e-9;
 
@@ -49,12 +48,6 @@ bool overlaps(const WireBox& x, const WireBox& y) {
   return true;
 }
 
-WireBox along(WireBox box, int a, std::int64_t lo, std::int64_t hi) {
-  box.lo[a] = lo;
-  box.hi[a] = hi;
-  return box;
-}
-
 /// Finds the FSI zone's one inner face and the fluid and watch boxes.
 void place_fsi_zone(const config::Scene& scene, AfdmpLayout& layout) {
   const std::string who = "scene '" + scene.name + "': ";
@@ -77,8 +70,8 @@ void place_fsi_zone(const config::Scene& scene, AfdmpLayout& layout) {
   for (int b = 0; b < 3; ++b)
     if (b != a && (fsi.lo[b] != 0 || fsi.hi[b] != layout.cells[b]))
       throw Error(who + "afdmp expected the FSI zone " + box_text(fsi) +
-                  " to span the domain along " + kAxis[b] + " (across its face normal to " +
-                  kAxis[a] + ")");
+                  " to span the domain along " + kAxisNames[b] + " (across its face normal to " +
+                  kAxisNames[a] + ")");
   if (!zone.activation_pressure)
     throw Error(who +
                 "afdmp needs zones.mpm.activation_pressure [Pa]: the FSI zone takes over "
@@ -90,7 +83,7 @@ void place_fsi_zone(const config::Scene& scene, AfdmpLayout& layout) {
   if (fluid_layers < std::max<std::int64_t>(kWatchLayers, 2))
     throw Error(who + "afdmp expected the fluid zone " + box_text(layout.fluid_cells) +
                 " to be >= " + std::to_string(std::max<std::int64_t>(kWatchLayers, 2)) +
-                " cells wide along " + kAxis[a] + ", got " + std::to_string(fluid_layers));
+                " cells wide along " + kAxisNames[a] + ", got " + std::to_string(fluid_layers));
   layout.watch_cells = layout.face_side > 0 ? along(layout.all_cells, a, face - kWatchLayers, face)
                                             : along(layout.all_cells, a, face, face + kWatchLayers);
   layout.fsi_cells = fsi;

@@ -32,7 +32,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace region = afdmp_region;
-const std::vector<std::string> kPeers = {"fdm", "mpm"};
+const std::vector<std::string> kAfdmpPeers = {"fdm", "mpm"};
 
 AfdmpStart start_of(const config::Scene& scene) {
   return scene.solver.afdmp.start == config::AfdmpStart::spherical ? AfdmpStart::spherical
@@ -61,7 +61,7 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
 void check_capabilities(const std::vector<v1::Hello>& hellos, bool mpm_needed, bool fsi_zone) {
   const auto need = [&](std::size_t s, const char* capability) {
     if (!offers(hellos[s], capability))
-      throw Error("solver '" + kPeers[s] + "' lacks capability '" + capability +
+      throw Error("solver '" + kAfdmpPeers[s] + "' lacks capability '" + capability +
                   "' that solver.method afdmp needs (proto/README.md §15)");
   };
   need(0, "field_chunks");
@@ -82,7 +82,7 @@ AuditOutflow audit_outflow(const std::vector<v1::Hello>& hellos, bool mpm_needed
   const Logger logger("coupler");
   for (std::size_t s = 0; s < 2; ++s)
     if (!(s == 0 ? outflow.fdm : outflow.mpm))
-      logger.warn("AFDMP: solver '", kPeers[s],
+      logger.warn("AFDMP: solver '", kAfdmpPeers[s],
                   "' does not offer boundary_outflow (proto/README.md §14): the run-long audit "
                   "takes its outflow as 0, so what leaves through open faces counts as an error");
   return outflow;
@@ -118,7 +118,7 @@ class AfdmpLoop {
                   .material_import = material_import},
         grid_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
                                              scene.domain.cells)) {
-    for (const auto& peer : kPeers) contact_[peer] = Clock::now();
+    for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
   }
 
   CoupledRunReport run() {
@@ -412,7 +412,7 @@ class AfdmpLoop {
   /// Pings every solver still needed, other than the active one, whose last answer is
   /// older than `age`.
   void ping_idle(std::chrono::milliseconds age) {
-    for (const auto& peer : kPeers) {
+    for (const auto& peer : kAfdmpPeers) {
       if (peer == holder_ || retired_.contains(peer)) continue;
       if (Clock::now() - contact_[peer] < age) continue;
       cosim::Message ping;
@@ -559,7 +559,7 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
                options.out_dir);
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
-    hub.gather(kPeers);
+    hub.gather(kAfdmpPeers);
     AfdmpLoop loop(scene, layout, outflow, material_import, hub, summary, options);
     try {
       const CoupledRunReport report = loop.run();

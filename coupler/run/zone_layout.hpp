@@ -24,6 +24,16 @@ struct WireBox {
   }
 };
 
+/// `box` with axis `a` replaced by [lo, hi).
+inline WireBox along(WireBox box, int a, std::int64_t lo, std::int64_t hi) {
+  box.lo[a] = lo;
+  box.hi[a] = hi;
+  return box;
+}
+
+/// The axes as messages name them.
+inline constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
 /// FDM ghost layers the coupler sets each step: the sweep reads i-3 ... i+3
 /// (fdm_solver/pencil_io.hpp kGhost).
 inline constexpr std::int64_t kFdmGhostLayers = 3;

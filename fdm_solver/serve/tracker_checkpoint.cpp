@@ -10,7 +10,7 @@ namespace {
 constexpr std::array<const char*, 3> kPosition = {"/tracers/position_x", "/tracers/position_y",
                                                   "/tracers/position_z"};
 
-std::vector<std::size_t> cell_shape(const grid::UniformGrid& grid) {
+std::vector<std::size_t> tracker_cell_shape(const grid::UniformGrid& grid) {
   const auto& n = grid.cells();
   return {static_cast<std::size_t>(n[2]), static_cast<std::size_t>(n[1]),
           static_cast<std::size_t>(n[0])};
@@ -37,7 +37,7 @@ void write_tracker_state(io::Hdf5File& h5, const MultiMaterialTracker& tracker,
 
   const MaterialMap& map = tracker.materials();
   const MaterialStates& states = tracker.states();
-  const auto cells = cell_shape(grid);
+  const auto cells = tracker_cell_shape(grid);
   auto per_material = cells;
   per_material.insert(per_material.begin(), static_cast<std::size_t>(map.material_count));
   h5.create_group("/materials");

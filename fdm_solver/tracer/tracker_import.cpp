@@ -14,7 +14,7 @@
 namespace mpfd::fdm {
 namespace {
 
-[[noreturn]] void refuse(const std::string& what) {
+[[noreturn]] void refuse_import(const std::string& what) {
   throw Error("tracker from imported tracers: " + what);
 }
 
@@ -22,21 +22,22 @@ void check_points(const grid::UniformGrid& grid, const TracerSet& points, int ma
   const std::size_t n = points.size();
   for (int a = 0; a < 3; ++a)
     if (points.position[a].size() != n)
-      refuse("position component " + std::to_string(a) + " has " +
-             std::to_string(points.position[a].size()) + " values for " + std::to_string(n) +
-             " tracers");
+      refuse_import("position component " + std::to_string(a) + " has " +
+                    std::to_string(points.position[a].size()) + " values for " + std::to_string(n) +
+                    " tracers");
   const grid::Vec3 lo = grid.origin();
   const grid::Vec3 hi = grid.upper();
   for (std::size_t t = 0; t < n; ++t) {
     if (points.material[t] < 0 || points.material[t] >= material_count)
-      refuse("tracer " + std::to_string(t) + " has material " + std::to_string(points.material[t]) +
-             ", outside [0, " + std::to_string(material_count) + ")");
+      refuse_import("tracer " + std::to_string(t) + " has material " +
+                    std::to_string(points.material[t]) + ", outside [0, " +
+                    std::to_string(material_count) + ")");
     for (int a = 0; a < 3; ++a) {
       const double x = points.position[a][t];
       if (!(x >= lo[a] && x <= hi[a]))  // false for NaN too
-        refuse("tracer " + std::to_string(t) + " is at " + std::to_string(x) + " m along axis " +
-               std::to_string(a) + ", outside the grid [" + std::to_string(lo[a]) + ", " +
-               std::to_string(hi[a]) + "] m");
+        refuse_import("tracer " + std::to_string(t) + " is at " + std::to_string(x) +
+                      " m along axis " + std::to_string(a) + ", outside the grid [" +
+                      std::to_string(lo[a]) + ", " + std::to_string(hi[a]) + "] m");
     }
   }
 }
@@ -45,10 +46,11 @@ void check_start(const MaterialStartView& start, std::size_t values) {
   if (start.volume_fraction.empty() && start.density.empty() && start.energy.empty()) return;
   if (start.volume_fraction.size() != values || start.density.size() != values ||
       start.energy.size() != values)
-    refuse("the material start needs " + std::to_string(values) +
-           " values (materials x cells) of theta, rho_r and e_r; got " +
-           std::to_string(start.volume_fraction.size()) + ", " +
-           std::to_string(start.density.size()) + " and " + std::to_string(start.energy.size()));
+    refuse_import("the material start needs " + std::to_string(values) +
+                  " values (materials x cells) of theta, rho_r and e_r; got " +
+                  std::to_string(start.volume_fraction.size()) + ", " +
+                  std::to_string(start.density.size()) + " and " +
+                  std::to_string(start.energy.size()));
 }
 
 /// The pair of a mixed cell if `start` holds exactly these two materials there,
@@ -83,17 +85,17 @@ TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_cou
                                  const std::function<void()>& accepted) {
   const std::size_t cells = grid.cell_count();
   if (fallback_material.size() != cells || density.size() != cells || energy.size() != cells)
-    refuse("the grid has " + std::to_string(cells) + " cells; got " +
-           std::to_string(fallback_material.size()) + " fallback materials, " +
-           std::to_string(density.size()) + " densities and " + std::to_string(energy.size()) +
-           " energies");
+    refuse_import("the grid has " + std::to_string(cells) + " cells; got " +
+                  std::to_string(fallback_material.size()) + " fallback materials, " +
+                  std::to_string(density.size()) + " densities and " +
+                  std::to_string(energy.size()) + " energies");
   check_points(grid, points, material_count);
   check_start(start, static_cast<std::size_t>(material_count) * cells);
   for (std::size_t c = 0; c < cells; ++c)  // as MaterialMap would, but before `accepted`
     if (fallback_material[c] < 0 || fallback_material[c] >= material_count)
-      refuse("cell " + std::to_string(c) + " has the fallback material " +
-             std::to_string(fallback_material[c]) + ", outside [0, " +
-             std::to_string(material_count) + ")");
+      refuse_import("cell " + std::to_string(c) + " has the fallback material " +
+                    std::to_string(fallback_material[c]) + ", outside [0, " +
+                    std::to_string(material_count) + ")");
   // No carried volumes yet: all zero makes classify_cells take theta from the
   // tracer counts, as equal volumes per tracer would.
   points.volume.assign(points.size(), 0.0);

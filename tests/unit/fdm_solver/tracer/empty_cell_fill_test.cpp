@@ -78,13 +78,19 @@ void reference_fill(const grid::UniformGrid& grid, const TracerBins& bins, Mater
       }
     }
   }
+  for (std::size_t c = 0; c < cells; ++c)
+    if (bins.count(c) == 0)
+      for (int r = 0; r < 2; ++r)
+        map.theta[static_cast<std::size_t>(r) * cells + c] = r == map.material[c] ? 1.0 : 0.0;
 }
 
-// Random sparse tracers of two materials on 3D and 2D grids, with mixed cells
-// among the sources: every empty cell gets the reference's material.
+// Random sparse tracers of two materials on 3D grids and 2D ones in each plane,
+// with mixed cells among the sources: every empty cell gets the reference's
+// material and volume fractions.
 TEST(EmptyCellFill, LabelsEveryCellAsTheFirstWrittenBreadthFirstFill) {
   std::mt19937 random(7);
-  for (const grid::Index3 shape : {grid::Index3{9, 7, 5}, grid::Index3{12, 8, 1}}) {
+  for (const grid::Index3 shape : {grid::Index3{9, 7, 5}, grid::Index3{12, 8, 1},
+                                   grid::Index3{1, 9, 7}, grid::Index3{7, 1, 5}}) {
     const grid::UniformGrid grid{{0, 0, 0}, {1, 1, 1}, shape};  // cells of 1 m
     const std::size_t cells = grid.cell_count();
     for (int trial = 0; trial < 20; ++trial) {
@@ -111,6 +117,7 @@ TEST(EmptyCellFill, LabelsEveryCellAsTheFirstWrittenBreadthFirstFill) {
       std::vector<std::size_t> queue;
       fill_empty_cells(grid, bins, map, queue);
       EXPECT_EQ(map.material, expected.material) << "trial " << trial;
+      EXPECT_EQ(map.theta, expected.theta) << "trial " << trial;
     }
   }
 }
