@@ -29,10 +29,10 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins, Mat
 
   for (std::size_t c = 0; c < cells; ++c)
     if (bins.count(c) == 0) map.material[c] = kUnassigned;
-  // Breadth-first from every cell with tracers, in cell order; a cell's face
-  // neighbours by index strides, its position from two divisions (this runs on
-  // the whole grid every step, serially: a V4 octant spent 13 % of its run here
-  // with Index3 round trips).
+  // Breadth-first from every cell with tracers, in cell order. This runs over
+  // the whole grid every step, serially: neighbours come from index strides and
+  // a cell's position from two divisions. An inactive axis (one cell) has no
+  // neighbour either way.
   const auto& n = grid.cells();
   const std::size_t nx = static_cast<std::size_t>(n[0]);
   const std::size_t nxy = nx * static_cast<std::size_t>(n[1]);
@@ -49,7 +49,6 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins, Mat
       queue.push_back(neighbour);
     };
     for (int a = 0; a < 3; ++a) {
-      if (!grid.is_active(a)) continue;
       if (at[a] > 0) claim(c - stride[a]);
       if (at[a] + 1 < static_cast<std::size_t>(n[a])) claim(c + stride[a]);
     }

@@ -16,7 +16,6 @@ namespace {
 
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using ::testing::StartsWith;
 
 // The V5 shape (T §3.4.4) at h = 10 mm: TNT at the origin, a steel plate in
 // the FSI zone x in [0.3, 0.5].

@@ -12,9 +12,6 @@
 namespace mpfd::config::test {
 namespace {
 
-using ::testing::ElementsAre;
-using ::testing::HasSubstr;
-
 // Seed S's case at h = 20 mm: TNT a = 0.1 m in water to 2.5 m.
 const std::string kUnderwater = R"(name: underwater
 time: {end: 1.4e-3}
