@@ -277,6 +277,11 @@ void CfdmpStep<Dim>::add_deposit(cosim::Message& fdm) {
   handshake::deposit<Dim>(returned_mass_, returned_momentum_, returned_energy_, outer_in_deposit_,
                           geometry_.cell_volume, add);
   for (const double m : returned_mass_) traffic_.deposited_mass += m;
+  drain_.start_deposit();
+  if (!strip_now_.rho.empty())  // the cells k-w as the FDM exported them after its last advance
+    for (std::size_t t = 0; t < outer_in_deposit_.size(); ++t)
+      drain_.observe(t, strip_now_.rho[strip_layout_.outer[t]], rho[outer_in_deposit_[t]],
+                     returned_mass_[t], geometry_.cell_volume);
   removed_mass_.clear();
   removed_energy_.clear();
   removed_position_.clear();
@@ -316,8 +321,7 @@ void CfdmpStep<Dim>::add_ghost_cells(cosim::Message& fdm, const StepPlan& plan) 
 }
 
 template <int Dim>
-std::string CfdmpStep<Dim>::empty_ghost_cell_text(std::size_t c, const StepPlan& plan) const {
-  const handshake::Index<Dim> cell = ghost_cells_.at(c);
+std::string CfdmpStep<Dim>::cell_text(const handshake::Index<Dim>& cell) const {
   std::array<std::int64_t, 3> index{};
   std::array<double, 3> centre = inactive_centre_;
   for (int k = 0; k < Dim; ++k) {
@@ -325,18 +329,28 @@ std::string CfdmpStep<Dim>::empty_ghost_cell_text(std::size_t c, const StepPlan&
     index[a] = cell[k];
     centre[a] = geometry_.origin(k) + (static_cast<double>(cell[k]) + 0.5) * geometry_.spacing(k);
   }
-  const auto list = [](const auto& v) {
-    return shortest_text(v[0]) + ", " + shortest_text(v[1]) + ", " + shortest_text(v[2]);
-  };
+  return "(" + std::to_string(index[0]) + ", " + std::to_string(index[1]) + ", " +
+         std::to_string(index[2]) + ") at (" + number_text(centre[0], 6) + ", " +
+         number_text(centre[1], 6) + ", " + number_text(centre[2], 6) + ") m";
+}
+
+template <int Dim>
+std::string CfdmpStep<Dim>::empty_ghost_cell_text(std::size_t c, const StepPlan& plan) const {
   char time[32];
   std::snprintf(time, sizeof time, "%g", plan.time);
   return "ghost cells: at t = " + std::string(time) + " s (step " + std::to_string(plan.step) +
-         ") the FDM ghost cell (" + std::to_string(index[0]) + ", " + std::to_string(index[1]) +
-         ", " + std::to_string(index[2]) + ") at (" + list(centre) +
-         ") m gets no MPM nodal mass (T (4-1): its corner nodes hold none): the MPM zone has "
+         ") the FDM ghost cell " + cell_text(ghost_cells_.at(c)) +
+         " gets no MPM nodal mass (T (4-1): its corner nodes hold none): the MPM zone has "
          "emptied next to the zone face, so there is no material to give the FDM there. An MPM "
          "zone must not empty: give its outer faces wall or symmetry boundaries, or move the zone "
          "face (zones.mpm) to where inflow keeps the zone filled";
+}
+
+template <int Dim>
+std::string CfdmpStep<Dim>::face_drain_text() const {
+  auto cell = strip_layout_.inner_cell[drain_.last().face_cell];  // k-w+1; k-w is outside
+  cell[strip_layout_.face.axis] -= strip_layout_.face.side;
+  return drain_.cause_text(cell_text(cell));
 }
 
 template <int Dim>

@@ -30,6 +30,7 @@
 #include "coupler/handshake/interface_nodes.hpp"
 #include "coupler/handshake/particle_injection.hpp"
 #include "coupler/handshake/strip_layout.hpp"
+#include "coupler/run/face_drain.hpp"
 #include "coupler/run/injected_material.hpp"
 #include "coupler/run/zone_layout.hpp"
 
@@ -100,6 +101,11 @@ class CfdmpStep {
   [[nodiscard]] const Totals& dormant_outflow() const { return dormant_outflow_; }
   [[nodiscard]] const SolverFeatures& features() const { return features_; }
   [[nodiscard]] const StepTraffic& traffic() const { return traffic_; }
+  /// Why an FDM cell beside the coupling face emptied, when the last deposit took
+  /// most of one (face_drain.hpp); empty otherwise.
+  [[nodiscard]] std::string face_drain_text() const;
+  /// The largest share of a face cell's mass any deposit of the run took.
+  [[nodiscard]] double max_face_drain_share() const { return drain_.run_max_share(); }
 
  private:
   using Vec = handshake::Vec<Dim>;
@@ -128,6 +134,8 @@ class CfdmpStep {
   void add_deposit(cosim::Message& fdm);
   void add_injection(cosim::Message& mpm);
   void add_ghost_cells(cosim::Message& fdm, const StepPlan& plan);
+  /// "(i, j, k) at (x, y, z) m" of a cell of the active axes.
+  [[nodiscard]] std::string cell_text(const handshake::Index<Dim>& cell) const;
   /// The error for ghost cell `c` (region order) left without MPM mass.
   [[nodiscard]] std::string empty_ghost_cell_text(std::size_t c, const StepPlan& plan) const;
   void add_interface_nodes(cosim::Message& mpm);
@@ -196,6 +204,7 @@ class CfdmpStep {
   double fdm_dt_ = 0, mpm_dt_ = 0;
   Totals fdm_totals_, mpm_totals_, fdm_outflow_, mpm_outflow_, dormant_outflow_;
   StepTraffic traffic_;
+  FaceDrainWatch drain_;
 };
 
 }  // namespace mpfd::coupler

@@ -181,6 +181,8 @@ class Loop {
     return report_;
   }
 
+  [[nodiscard]] std::string face_drain_text() const { return step_.face_drain_text(); }
+
   void record_summary(const std::string& status, double wall) {
     const Totals now = current();
     // What left through open faces (0 from a solver that does not report it, v1.0).
@@ -210,6 +212,7 @@ class Loop {
                                      {"removed_particles", removed_},
                                      {"injected_mass_kg", injected_mass_},
                                      {"deposited_mass_kg", deposited_mass_},
+                                     {"max_face_cell_drain", step_.max_face_drain_share()},
                                      {"discarded_at_start", discarded_}});
     const double overhead =
         step_seconds_ > 0 ? 1.0 - report_.max_advance_seconds / step_seconds_ : 0.0;
@@ -359,14 +362,25 @@ CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout,
                           const SolverFeatures& features, cosim::Hub& hub, io::RunSummary& summary,
                           const CoupledRunOptions& options) {
   Loop<Dim> loop(scene, layout, features, hub, summary, options);
-  try {
-    return loop.run();
-  } catch (...) {
+  const auto record_failure = [&loop] {
     try {
       loop.record_summary("failed", 0);
     } catch (const std::exception&) {
       // The run's own error is the one to report; run_session writes the summary's status.
     }
+  };
+  try {
+    return loop.run();
+  } catch (const Error& error) {
+    record_failure();
+    // An FDM cell beside the face that the deposits were emptying is the cause
+    // behind the negative density the FDM (or the coupler's strip checks) reports.
+    const std::string cause = loop.face_drain_text();
+    if (cause.empty()) throw;
+    std::string text = error.what();
+    throw Error(text + (text.ends_with('.') ? " " : ". ") + cause);
+  } catch (...) {
+    record_failure();
     throw;
   }
 }

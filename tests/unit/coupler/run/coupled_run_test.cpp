@@ -246,7 +246,7 @@ TEST(CoupledRun, An_emptied_mpm_zone_is_named_with_time_step_cell_position_and_w
     FAIL() << "expected an error";
   } catch (const Error& error) {
     const std::string cell = "(" + std::to_string(ghost.lo[0]) + ", 0, 0)";
-    const std::string x = shortest_text((static_cast<double>(ghost.lo[0]) + 0.5) * 0.025);
+    const std::string x = number_text((static_cast<double>(ghost.lo[0]) + 0.5) * 0.025, 6);
     EXPECT_THAT(error.what(),
                 AllOf(HasSubstr("at t = 0 s (step 1)"), HasSubstr("ghost cell " + cell),
                       HasSubstr("at (" + x + ", 0.005, 0.005) m"), HasSubstr("no MPM nodal mass"),
@@ -254,6 +254,34 @@ TEST(CoupledRun, An_emptied_mpm_zone_is_named_with_time_step_cell_position_and_w
                       HasSubstr("move the zone face")))
         << "ghost cells " << box_text(ghost);
   }
+}
+
+// Gas drawn out of the MPM zone by a low pressure on the FDM's side, and an MPM
+// whose particles never cross the face (the stand-in stays at rest): the FDM's
+// flux out of the zone is taken back from cell k-w every step and nothing comes
+// in, so that cell empties. The error says so, and that time.cfl does not help.
+TEST(CoupledRun, A_face_cell_the_deposits_empty_is_named_as_the_cause_of_the_fdm_failure) {
+  Harness h;
+  std::string text = quiet_tube(2.0e-3);
+  text +=
+      "bodies:\n  - {name: low, material: air, density: 0.12, pressure: 1.0e4,\n"
+      "     shape: {box: {lower: [0, 0, 0], upper: [0.3, 0.01, 0.01]}}}\n";
+  const auto scene = config::parse_scene(text, "drawn_out.yaml");
+  const auto face = make_zone_layout(scene).strip_cells.lo[0];  // cell k-w
+  auto solvers = h.start_solvers();
+  const auto out = fresh_dir("drawn-out");
+  try {
+    run_cfdmp(scene, text, *h.hub, solvers, options(out));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    const std::string cell = "(" + std::to_string(face) + ", 0, 0)";
+    EXPECT_THAT(error.what(),
+                AllOf(HasSubstr("beside the coupling face"), HasSubstr("FDM cell " + cell),
+                      HasSubstr("the particles that crossed brought 0 kg"),
+                      HasSubstr("a smaller time.cfl or a finer grid does not cure this")));
+  }
+  const auto summary = read_json(out / "summary.json");
+  EXPECT_GE(summary["details"]["crossing"]["max_face_cell_drain"].get<double>(), 0.5);
 }
 
 // The killed solver is named at once (the hub watches the solvers while it waits),

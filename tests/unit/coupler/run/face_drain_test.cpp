@@ -1,0 +1,67 @@
+// The watch over what the coupler's deposits take from the FDM cells beside the
+// coupling face (coupler/run/face_drain.hpp).
+#include "coupler/run/face_drain.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace mpfd::coupler {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+constexpr double kCellVolume = 2.0e-3;  // m^3
+
+TEST(FaceDrainWatch, Keeps_the_face_cell_the_last_deposit_took_the_largest_share_of) {
+  FaceDrainWatch watch;
+  watch.start_deposit();
+  // Cell 0 gains; cell 1 loses 0.2 of its 1 kg/m^3 (0.3 taken back, 0.1 brought
+  // by particles, per m^3); cell 2 loses 0.6 of its 0.5 kg/m^3, nothing brought.
+  watch.observe(0, 1.0, +0.4, 0.0, kCellVolume);
+  watch.observe(1, 1.0, -0.2, -0.3 * kCellVolume, kCellVolume);
+  watch.observe(2, 0.5, -0.3, -0.3 * kCellVolume, kCellVolume);
+  EXPECT_EQ(watch.last().face_cell, 2u);
+  EXPECT_DOUBLE_EQ(watch.last().share, 0.6);
+  EXPECT_DOUBLE_EQ(watch.last().density, 0.5);
+  EXPECT_DOUBLE_EQ(watch.last().taken_back, 0.3 * kCellVolume);
+  EXPECT_DOUBLE_EQ(watch.last().particle_mass, 0.0);
+  EXPECT_DOUBLE_EQ(watch.run_max_share(), 0.6);
+}
+
+TEST(FaceDrainWatch, A_new_deposit_forgets_the_last_one_but_the_run_keeps_its_largest_share) {
+  FaceDrainWatch watch;
+  watch.start_deposit();
+  watch.observe(3, 1.0, -0.9, -0.9 * kCellVolume, kCellVolume);
+  watch.start_deposit();
+  watch.observe(3, 1.0, -0.1, -0.5 * kCellVolume, kCellVolume);
+  EXPECT_DOUBLE_EQ(watch.last().share, 0.1);
+  EXPECT_NEAR(watch.last().particle_mass, 0.4 * kCellVolume, 1e-18);
+  EXPECT_DOUBLE_EQ(watch.run_max_share(), 0.9);
+}
+
+TEST(FaceDrainWatch, Names_the_cause_only_from_half_the_cells_mass_on) {
+  FaceDrainWatch watch;
+  watch.start_deposit();
+  watch.observe(0, 1.0, -0.49, -0.49 * kCellVolume, kCellVolume);
+  EXPECT_EQ(watch.cause_text("(18, 4, 0)"), "");
+  watch.start_deposit();
+  watch.observe(0, 0.411, -0.415, -0.415 * kCellVolume, kCellVolume);
+  EXPECT_THAT(watch.cause_text("(18, 4, 0) at (1.17, 0.285, 0.0317) m"),
+              AllOf(HasSubstr("took 101 % of the mass of FDM cell (18, 4, 0) at (1.17, 0.285, "
+                              "0.0317) m beside the coupling face (density 0.411 kg/m^3"),
+                    HasSubstr("0.00083 kg, is taken back"),
+                    HasSubstr("the particles that crossed brought 0 kg"),
+                    HasSubstr("move the zone face (zones.mpm)")));
+}
+
+TEST(FaceDrainWatch, An_empty_or_unset_cell_is_not_a_share) {
+  FaceDrainWatch watch;
+  watch.start_deposit();
+  watch.observe(0, 0.0, -1.0, -1.0 * kCellVolume, kCellVolume);
+  EXPECT_DOUBLE_EQ(watch.last().share, 0.0);
+  EXPECT_EQ(watch.cause_text("(0, 0, 0)"), "");
+}
+
+}  // namespace
+}  // namespace mpfd::coupler
