@@ -149,11 +149,12 @@ void outer_node_terms(const CellStates<Dim>& strip, std::span<const double> stri
 }
 
 template <int Dim>
-void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
-                      const StripLayout<Dim>& layout, double cell_volume,
-                      std::span<double> volume) {
+void face_push_volume(std::span<const double> face_mass, std::span<const double> solid_volume,
+                      std::span<const double> strip_rho, const StripLayout<Dim>& layout,
+                      double cell_volume, std::span<double> volume) {
   const std::size_t n = layout.face_cells();
   require_length(face_mass.size(), n, "face push volume", "face_mass");
+  require_length(solid_volume.size(), n, "face push volume", "solid_volume");
   require_length(strip_rho.size(), layout.box.count(), "face push volume", "strip rho");
   require_length(volume.size(), n, "face push volume", "volume");
   for (std::size_t t = 0; t < n; ++t) {
@@ -161,9 +162,10 @@ void face_push_volume(std::span<const double> face_mass, std::span<const double>
     if (!(rho > 0))
       throw Error("face push volume: face cell " + std::to_string(t) +
                   " needs an outer cell with rho > 0, got " + shortest_text(rho));
-    // No particle mass in the face cell (an emptied zone edge): nothing resists,
+    // No particle in the face cell (an emptied zone edge): nothing resists,
     // and a zero volume would switch the FDM's pressure off there; T's V_c.
-    volume[t] = face_mass[t] > 0 ? face_mass[t] / rho : cell_volume;
+    const bool held = face_mass[t] > 0 || solid_volume[t] > 0;
+    volume[t] = held ? face_mass[t] / rho + solid_volume[t] : cell_volume;
   }
 }
 
@@ -181,7 +183,8 @@ void face_push_volume(std::span<const double> face_mass, std::span<const double>
                                       const StripLayout<Dim>&, const InterfaceStencil<Dim>&,       \
                                       const CellGeometry<Dim>&, const NodeOutputs<Dim>&);          \
   template void face_push_volume<Dim>(std::span<const double>, std::span<const double>,            \
-                                      const StripLayout<Dim>&, double, std::span<double>);
+                                      std::span<const double>, const StripLayout<Dim>&, double,    \
+                                      std::span<double>);
 MPFD_INSTANTIATE_INTERFACE(1)
 MPFD_INSTANTIATE_INTERFACE(2)
 MPFD_INSTANTIATE_INTERFACE(3)

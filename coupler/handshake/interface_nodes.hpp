@@ -93,11 +93,16 @@ void outer_node_terms(const CellStates<Dim>& strip, std::span<const double> stri
 /// density ρ pushes with p m / ρ, whatever its compression; V_c (T) pushes
 /// with p V_c, more than the zone's particles next to the face resist with
 /// once they are compressed (their mass is fixed, the FDM cell's grows). So
-/// per face cell V = m_t / ρ_outer, m_t the MPM particles' mass in cell
-/// k-w+1 (region face_particles); V_c = `cell_volume` where that cell holds no
-/// particle mass. Writes `volume` (one per face cell).
+/// per face cell V = m_t / ρ_outer, m_t the MPM's fluid particles' mass in
+/// cell k-w+1 (region face_particles), plus the volume V_s of its solid
+/// particles: a solid resists with its stress on its own volume, and its mass
+/// at the fluid's density would be thousands of cell volumes (a steel plate at
+/// the face was flung off by the air at rest, docs/coupler.md). V_c =
+/// `cell_volume` where that cell holds no particle. Writes `volume` (one per
+/// face cell).
 template <int Dim>
-void face_push_volume(std::span<const double> face_mass, std::span<const double> strip_rho,
-                      const StripLayout<Dim>& layout, double cell_volume, std::span<double> volume);
+void face_push_volume(std::span<const double> face_mass, std::span<const double> solid_volume,
+                      std::span<const double> strip_rho, const StripLayout<Dim>& layout,
+                      double cell_volume, std::span<double> volume);
 
 }  // namespace mpfd::coupler::handshake

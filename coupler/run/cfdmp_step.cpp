@@ -98,7 +98,10 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
   }
   crossed_mass_.assign(faces, 0);
   face_mass_.assign(faces, 0);
+  face_solid_volume_.assign(faces, 0);
   push_volume_.assign(faces, 0);
+  solid_ = solid_materials(scene);
+  any_solid_ = std::ranges::find(solid_, 1) != solid_.end();
   crossed_energy_.assign(faces, 0);
   crossed_momentum_.assign(faces, Vec::Zero());
   parcels_ = handshake::Parcels<Dim>(faces);
@@ -170,7 +173,10 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   }
   // Before the removal: the particles it takes lie outside cell k-w+1 anyway, and its
   // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read).
-  add_export(mpm, "face_particles", {"mass", "position"});
+  if (any_solid_)
+    add_export(mpm, "face_particles", {"mass", "position", "volume", "material"});
+  else
+    add_export(mpm, "face_particles", {"mass", "position"});
   mpm_ops_.push_back(Op::export_face_particles);
   if (plan.advance) {
     add_remove(mpm, "crossed", "mpm_zone");
@@ -410,7 +416,7 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
   force.resize(n);
   std::span<const double> push_volume;  // T's V_c until the MPM has told its face mass
   if (have_face_mass_) {
-    handshake::face_push_volume<Dim>(face_mass_, strip_now_.rho, strip_layout_,
+    handshake::face_push_volume<Dim>(face_mass_, face_solid_volume_, strip_now_.rho, strip_layout_,
                                      geometry_.cell_volume, push_volume_);
     push_volume = push_volume_;
   }
@@ -591,8 +597,21 @@ void CfdmpStep<Dim>::read_mpm(const cosim::Message& reply) {
 }
 
 template <int Dim>
+std::size_t CfdmpStep<Dim>::face_cell_of(std::span<const double> position, std::size_t p) const {
+  handshake::Index<Dim> cell{};
+  for (int k = 0; k < Dim; ++k) {  // clamped: a particle on the box's edge is the box's
+    const double x = position[3 * p + static_cast<std::size_t>(layout_.active[k])];
+    const auto i =
+        static_cast<std::int64_t>(std::floor((x - geometry_.origin(k)) / geometry_.spacing(k)));
+    cell[k] = std::clamp(i, face_cells_.lo[k], face_cells_.hi[k] - 1);
+  }
+  return face_cells_.flat(cell);
+}
+
+template <int Dim>
 void CfdmpStep<Dim>::read_face_particles(std::size_t n, const cosim::Message& reply) {
-  // Σ m_p per cell k-w+1: the zone's particles that resist the FDM's push (face_push_volume).
+  // Per cell k-w+1, the zone's particles that resist the FDM's push (face_push_volume):
+  // the fluids' Σ m_p and, in a scene with solids, the solids' Σ V_p.
   // Summed from the views: the count changes every injection, so no copy is kept.
   const auto mass_view = cosim::view_array<double>(reply, "face_particles", "mass");
   const auto position_view = cosim::view_array<double>(reply, "face_particles", "position");
@@ -600,17 +619,29 @@ void CfdmpStep<Dim>::read_face_particles(std::size_t n, const cosim::Message& re
   check_value_count(reply, kMpm, "face_particles", "mass", mass.size(), n);
   check_value_count(reply, kMpm, "face_particles", "position", position.size(), 3 * n);
   std::fill(face_mass_.begin(), face_mass_.end(), 0.0);
-  for (std::size_t p = 0; p < n; ++p) {
-    handshake::Index<Dim> cell{};
-    for (int k = 0; k < Dim; ++k) {  // clamped: a particle on the box's edge is the box's
-      const double x = position[3 * p + static_cast<std::size_t>(layout_.active[k])];
-      const auto i =
-          static_cast<std::int64_t>(std::floor((x - geometry_.origin(k)) / geometry_.spacing(k)));
-      cell[k] = std::clamp(i, face_cells_.lo[k], face_cells_.hi[k] - 1);
-    }
-    face_mass_[face_cells_.flat(cell)] += mass[p];
-  }
+  std::fill(face_solid_volume_.begin(), face_solid_volume_.end(), 0.0);
   have_face_mass_ = true;
+  if (!any_solid_) {
+    for (std::size_t p = 0; p < n; ++p) face_mass_[face_cell_of(position, p)] += mass[p];
+    return;
+  }
+  const auto volume_view = cosim::view_array<double>(reply, "face_particles", "volume");
+  const auto material_view = cosim::view_array<std::uint32_t>(reply, "face_particles", "material");
+  const auto volume = volume_view.values();
+  const auto material = material_view.values();
+  check_value_count(reply, kMpm, "face_particles", "volume", volume.size(), n);
+  check_value_count(reply, kMpm, "face_particles", "material", material.size(), n);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (material[p] >= solid_.size())
+      throw Error("solver 'mpm' exported face_particles material " + std::to_string(material[p]) +
+                  " for particle " + std::to_string(p) + "; the scene has " +
+                  std::to_string(solid_.size()) + " materials");
+    const std::size_t t = face_cell_of(position, p);
+    if (solid_[material[p]])
+      face_solid_volume_[t] += volume[p];
+    else
+      face_mass_[t] += mass[p];
+  }
 }
 
 template <int Dim>

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -145,6 +146,8 @@ class CfdmpStep {
                                    std::size_t count) const;
   void read_crossed(const cosim::Message& reply);
   void read_face_particles(std::size_t n, const cosim::Message& reply);
+  /// The face cell (k-w+1, C order) of particle p of `position` ([n, 3], m).
+  [[nodiscard]] std::size_t face_cell_of(std::span<const double> position, std::size_t p) const;
   void add_audit_export(cosim::Message& fdm, const char* region) const;
   void add_cell_apply(cosim::Message& fdm, const char* region, cosim::v1::ApplyRegion::Mode mode);
   void add_face_fluxes(const handshake::Amounts<Dim>& returned);
@@ -184,8 +187,11 @@ class CfdmpStep {
   std::vector<double> ghost_node_mass_, ghost_cell_energy_;
   std::vector<Vec> ghost_node_momentum_;
   bool have_ghost_source_ = false;
-  std::vector<double> face_mass_;  ///< per face cell: the MPM particles' mass in cell k-w+1
+  std::vector<double> face_mass_;  ///< per face cell: the MPM's fluid particles' mass in cell k-w+1
+  std::vector<double> face_solid_volume_;  ///< per face cell: its solid particles' volume there
   bool have_face_mass_ = false;
+  std::vector<char> solid_;          ///< per scene material: it has strength (a solid)
+  bool any_solid_ = false;           ///< face_particles then also exports volume and material
   std::vector<double> push_volume_;  ///< per face cell: V of (4-9), face_push_volume
   std::vector<double> removed_mass_, removed_energy_;
   std::vector<Vec> removed_position_, removed_velocity_;

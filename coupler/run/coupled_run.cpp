@@ -80,8 +80,13 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   if (outer_nodes)
     *mpm.add_regions() = make_region("outer_nodes", v1::REGION_KIND_NODES, layout.outer_nodes,
                                      {"mass", "momentum", "internal_force"});
-  *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
-                                   {"mass", "position"});
+  const auto solid = solid_materials(scene);
+  if (std::ranges::find(solid, 1) != solid.end())
+    *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
+                                     {"mass", "position", "volume", "material"});
+  else
+    *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
+                                     {"mass", "position"});
   *mpm.add_regions() = features.mpm_outflow
                            ? make_region("mpm_zone", v1::REGION_KIND_PARTICLES, layout.mpm_zone,
                                          {"mass", "velocity", "internal_energy", "outflow_mass",

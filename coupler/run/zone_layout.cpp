@@ -1,6 +1,7 @@
 #include "coupler/run/zone_layout.hpp"
 
 #include <cmath>
+#include <variant>
 
 #include "common/core/error.hpp"
 
@@ -29,6 +30,13 @@ WireBox nodes_of(WireBox cells, const WireIndex& grid_cells) {
 
 bool mpm_reaches_outer_nodes(const config::Scene& scene) {
   return scene.solver.mpm.shape_function != config::ShapeFunction::linear;
+}
+
+std::vector<char> solid_materials(const config::Scene& scene) {
+  std::vector<char> solid;
+  for (const auto& material : scene.materials)
+    solid.push_back(!std::holds_alternative<config::NoStrength>(material.strength));
+  return solid;
 }
 
 std::string box_text(const WireBox& box) {

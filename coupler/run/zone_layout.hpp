@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "common/config/scene.hpp"
 
@@ -73,6 +74,11 @@ struct ZoneLayout {
 /// (uGIMP, cpGIMP): the coupler then also feeds outer_nodes from the FDM
 /// (handshake::outer_node_terms). Linear shapes stop at the face node layer.
 [[nodiscard]] bool mpm_reaches_outer_nodes(const config::Scene& scene);
+
+/// Whether material m of the scene has strength (a solid), per material: the
+/// FDM's push on the face nodes counts a solid by its volume (face_push_volume),
+/// so face_particles then also carries volume and material.
+[[nodiscard]] std::vector<char> solid_materials(const config::Scene& scene);
 
 /// "[lo0, hi0) x [lo1, hi1) x [lo2, hi2)", for messages.
 [[nodiscard]] std::string box_text(const WireBox& box);

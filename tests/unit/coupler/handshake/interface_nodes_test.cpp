@@ -156,8 +156,9 @@ TEST(InterfaceNodes2D, Push_volume_is_the_face_mass_over_the_outer_density) {
   strip.rho[layout.outer[1]] = 2.4;
   std::vector<double> face_mass(faces, 0.6 * g.cell_volume);
   face_mass[2] = 0.0;  // an emptied face cell: T's V_c, not a pressure switched off
+  const std::vector<double> no_solid(faces, 0.0);
   std::vector<double> volume(faces);
-  face_push_volume<2>(face_mass, strip.rho, layout, g.cell_volume, volume);
+  face_push_volume<2>(face_mass, no_solid, strip.rho, layout, g.cell_volume, volume);
   for (std::size_t t = 0; t < faces; ++t)
     EXPECT_DOUBLE_EQ(volume[t], t == 2 ? g.cell_volume : 0.6 * g.cell_volume / (t == 1 ? 2.4 : 1.2))
         << "face cell " << t;
@@ -180,8 +181,26 @@ TEST(InterfaceNodes2D, Push_volume_is_the_face_mass_over_the_outer_density) {
     EXPECT_EQ(with_half.momentum[i], t_as_printed.momentum[i]);
   }
   std::vector<double> short_volume(faces - 1);
-  EXPECT_THROW(face_push_volume<2>(face_mass, strip.rho, layout, g.cell_volume, short_volume),
-               Error);
+  EXPECT_THROW(
+      face_push_volume<2>(face_mass, no_solid, strip.rho, layout, g.cell_volume, short_volume),
+      Error);
+}
+
+// A solid in the face cell resists with its own volume: its mass at the air's
+// density would be thousands of cell volumes (docs/coupler.md, Deviations).
+TEST(InterfaceNodes2D, Push_volume_counts_a_solid_by_its_own_volume) {
+  const auto g = test::test_geometry<2>();
+  const auto layout = make_strip_layout(IndexBox<2>{{3, 0}, {5, 3}}, ZoneFace{0, 1});
+  const std::size_t faces = layout.face_cells(), n = layout.box.count();
+  const std::vector<double> rho(n, 1.2);
+  // Face cell 0: air only; 1: steel (7830 kg/m^3) on 0.6 of the cell, air on 0.4;
+  // 2: steel only.
+  const std::vector<double> air_mass{1.2 * g.cell_volume, 1.2 * 0.4 * g.cell_volume, 0.0};
+  const std::vector<double> solid_volume{0.0, 0.6 * g.cell_volume, g.cell_volume};
+  std::vector<double> volume(faces);
+  face_push_volume<2>(air_mass, solid_volume, rho, layout, g.cell_volume, volume);
+  for (std::size_t t = 0; t < faces; ++t)
+    EXPECT_NEAR(volume[t], g.cell_volume, 1e-15 * g.cell_volume) << "face cell " << t;
 }
 
 TEST(InterfaceNodes2D, Node_box_must_lie_on_the_face) {
