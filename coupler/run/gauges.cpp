@@ -1,6 +1,7 @@
 #include "coupler/run/gauges.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <span>
 
@@ -11,8 +12,9 @@ namespace mpfd::coupler {
 namespace {
 
 constexpr const char* kGroup = "gauges";
-// density, pressure, velocity_x, velocity_y, velocity_z[, mises_stress]
+// density, pressure, velocity_x, velocity_y, velocity_z[, mises_stress], position_x, _y, _z
 constexpr std::size_t kFluidQuantities = 5;
+constexpr std::array<const char*, 3> kPositionNames = {"position_x", "position_y", "position_z"};
 
 template <class Box>
 bool holds(const Box& box, const config::Vec3& point) {
@@ -48,7 +50,11 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
         return !std::holds_alternative<config::NoStrength>(m.strength);
       });
   if (structures) mpm_.quantities.push_back("mises_stress");
-  quantities_ = structures ? kFluidQuantities + 1 : kFluidQuantities;
+  // Where the MPM read each gauge (its nearest or followed particle), as mpm_solver run's
+  // gauges.csv; the FDM reads the cell holding the gauge's point, which is recorded.
+  for (const char* name : kPositionNames) mpm_.quantities.push_back(name);
+  position_column_ = structures ? kFluidQuantities + 1 : kFluidQuantities;
+  quantities_ = position_column_ + kPositionNames.size();
   fdm_all_ = fdm_;
   mpm_all_ = mpm_;
   following_ = mpm_;
@@ -71,6 +77,7 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
                                           {"velocity_y", "m/s"},
                                           {"velocity_z", "m/s"}};
   if (structures) recorded.push_back({"mises_stress", "Pa"});
+  for (const char* name : kPositionNames) recorded.push_back({name, "m"});
   recorder_.emplace(out_dir, std::move(points), std::move(recorded));
   // Room for the samples up front, so recording does not allocate while stepping.
   if (interval)
@@ -139,7 +146,10 @@ void CoupledGauges::record_pressure(double time, std::span<const double> pressur
   advance_schedule(time);
   // The stage knows pressure only: the other quantities are not numbers, not zeros.
   std::fill(sample_.begin(), sample_.end(), std::numeric_limits<double>::quiet_NaN());
-  for (const std::size_t g : fdm_all_.gauges) sample_[quantities_ * g + 1] = pressure[g];
+  for (const std::size_t g : fdm_all_.gauges) {
+    sample_[quantities_ * g + 1] = pressure[g];
+    record_fixed_position(g);
+  }
   recorder_->record(time, sample_);
 }
 
@@ -151,15 +161,22 @@ void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
                 std::to_string(part.gauges.size()) + " gauges with " +
                 (result.has_sampled() ? std::to_string(result.sampled().count()) + " samples"
                                       : std::string("another result")));
-  // A quantity the part does not sample (the FDM's Mises stress) stays 0.
-  for (std::size_t i = 0; i < part.gauges.size(); ++i)
-    for (std::size_t q = part.quantities.size(); q < quantities_; ++q)
-      sample_[quantities_ * part.gauges[i] + q] = 0.0;
+  // What the part does not sample: the FDM's Mises stress is 0, its position the gauge's point.
+  for (const std::size_t g : part.gauges) {
+    for (std::size_t q = part.quantities.size(); q < position_column_; ++q)
+      sample_[quantities_ * g + q] = 0.0;
+    if (part.quantities.size() < quantities_) record_fixed_position(g);
+  }
   for (std::size_t q = 0; q < part.quantities.size(); ++q) {
     read_doubles(reply, part.peer, kGroup, part.quantities[q], part.gauges.size(), values_);
     for (std::size_t i = 0; i < part.gauges.size(); ++i)
       sample_[quantities_ * part.gauges[i] + q] = values_[i];
   }
+}
+
+void CoupledGauges::record_fixed_position(std::size_t g) {
+  for (std::size_t a = 0; a < kPositionNames.size(); ++a)
+    sample_[quantities_ * g + position_column_ + a] = scene_.gauges[g].position[a];
 }
 
 void CoupledGauges::mark_unsampled_following() {

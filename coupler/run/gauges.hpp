@@ -10,7 +10,8 @@
 // the FDM's fluid). A gauge with follow: material is the MPM's in every phase:
 // the MPM reads the particle bound to it at Setup (mpm_solver/followed_gauges.hpp);
 // while the MPM cannot be asked (a sleeping CFDMP zone, AFDMP's 1D stage) it
-// records NaN.
+// records NaN. Each gauge's last columns are where it was read: the MPM's
+// particle, or the gauge's own point for the FDM and the 1D stage.
 
 #include <cstddef>
 #include <filesystem>
@@ -81,6 +82,8 @@ class CoupledGauges {
   void add_to(Part& part, cosim::Message& request);
   void read_from(const Part& part, const cosim::Message& reply);
   void mark_unsampled_following();
+  /// Gauge g's own point as its position columns (a gauge the FDM or the 1D stage reads).
+  void record_fixed_position(std::size_t g);
 
   const config::Scene& scene_;
   std::optional<io::GaugeRecorder> recorder_;
@@ -94,8 +97,10 @@ class CoupledGauges {
   bool started_ = false;
   double next_sample_ = 0;
   double pending_time_ = 0;
-  std::size_t quantities_ = 0;  ///< recorded per gauge: 5, or 6 with mises_stress
-  std::vector<double> sample_;  ///< gauge-major: density, pressure, velocity_x|y|z[, mises]
+  std::size_t quantities_ = 0;       ///< recorded per gauge: 8, or 9 with mises_stress
+  std::size_t position_column_ = 0;  ///< the first position column of a gauge
+  /// gauge-major: density, pressure, velocity_x|y|z[, mises_stress], position_x|y|z
+  std::vector<double> sample_;
 };
 
 }  // namespace mpfd::coupler

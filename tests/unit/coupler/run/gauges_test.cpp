@@ -40,7 +40,8 @@ std::filesystem::path fresh_gauges_dir(const std::string& name) {
   return dir;
 }
 
-/// A reply of `ops` results whose last is SampleGauges of `n` gauges, pressures `p`.
+/// A reply of `ops` results whose last is SampleGauges of `n` gauges, pressures `p`
+/// (density 1.5, a particle's position coordinates 0.25, every other quantity 7).
 cosim::Message reply(int ops, const std::vector<std::string>& quantities,
                      const std::vector<double>& p) {
   cosim::Message m;
@@ -49,8 +50,9 @@ cosim::Message reply(int ops, const std::vector<std::string>& quantities,
   result.add_results()->mutable_sampled()->set_count(p.size());
   for (const auto& q : quantities) {
     std::vector<double> values = p;
+    const bool position = q.starts_with("position_");
     if (q != "pressure")
-      for (auto& v : values) v = q == "rho" || q == "density" ? 1.5 : 7.0;
+      for (auto& v : values) v = q == "rho" || q == "density" ? 1.5 : position ? 0.25 : 7.0;
     cosim::add_array(m, {"gauges", q, {}, ""}, std::move(values));
   }
   return m;
@@ -114,8 +116,12 @@ TEST(CoupledGauges, A_step_asks_each_owner_and_the_histories_use_the_standalone_
   std::getline(csv, first);
   std::getline(csv, second);
   EXPECT_THAT(header, HasSubstr("time[s],a.density[kg/m^3],a.pressure[Pa],a.velocity_x[m/s]"));
-  EXPECT_THAT(header, HasSubstr("c.velocity_z[m/s]"));
-  EXPECT_EQ(first, "0,1.5,100000,7,7,7,1.5,200000,7,7,7,1.5,300000,7,7,7");
+  EXPECT_THAT(header,
+              HasSubstr("c.velocity_z[m/s],c.position_x[m],c.position_y[m],c.position_z[m]"));
+  // a: the FDM's cell, recorded at the gauge's point; b, c: where the MPM read them.
+  EXPECT_EQ(first,
+            "0,1.5,100000,7,7,7,0.2,0.005,0.005,1.5,200000,7,7,7,0.25,0.25,0.25,"
+            "1.5,300000,7,7,7,0.25,0.25,0.25");
   EXPECT_THAT(second, HasSubstr("0.0001,1.5,400000,"));
   EXPECT_TRUE(std::filesystem::exists(out / "gauges.h5"));
   const auto listing = gauges.listing();
@@ -179,9 +185,15 @@ TEST(CoupledGauges, A_following_gauge_is_sampled_by_the_MPM_or_recorded_as_NaN) 
   std::getline(csv, first);
   std::getline(csv, second);
   std::getline(csv, third);
-  EXPECT_EQ(first, "0,1.5,100000,7,7,7,1.5,200000,7,7,7,1.5,300000,7,7,7");
-  EXPECT_EQ(second, "0.0001,1.5,400000,7,7,7,1.5,500000,7,7,7,nan,nan,nan,nan,nan");
-  EXPECT_EQ(third, "0.0002,nan,600000,nan,nan,nan,nan,700000,nan,nan,nan,nan,nan,nan,nan,nan");
+  EXPECT_EQ(first,
+            "0,1.5,100000,7,7,7,0.2,0.005,0.005,1.5,200000,7,7,7,0.5,0.005,0.005,"
+            "1.5,300000,7,7,7,0.25,0.25,0.25");
+  EXPECT_EQ(second,
+            "0.0001,1.5,400000,7,7,7,0.2,0.005,0.005,1.5,500000,7,7,7,0.5,0.005,0.005,"
+            "nan,nan,nan,nan,nan,nan,nan,nan");
+  EXPECT_EQ(third,
+            "0.0002,nan,600000,nan,nan,nan,0.2,0.005,0.005,nan,700000,nan,nan,nan,0.5,0.005,0.005,"
+            "nan,nan,nan,nan,nan,nan,nan,nan");
 }
 
 // AFDMP's phases 1 and 3 run the MPM over the whole domain: it samples every gauge.
@@ -225,7 +237,9 @@ TEST(CoupledGauges, A_scene_with_a_structure_records_the_MPM_s_Mises_stress) {
   gauges.add(false, 0.0, GaugeSamplers::owners, fdm, mpm);
   const auto& mop = mpm.header.exchange().operations(0).sample();
   const std::vector<std::string> mq(mop.quantities().begin(), mop.quantities().end());
-  EXPECT_EQ(mq.back(), "mises_stress");
+  ASSERT_EQ(mq.size(), 9u);
+  EXPECT_EQ(mq[5], "mises_stress");
+  EXPECT_EQ(mq[8], "position_z");
   const auto& fop = fdm.header.exchange().operations(0).sample();
   const std::vector<std::string> fq(fop.quantities().begin(), fop.quantities().end());
   EXPECT_EQ(fq.size(), 5u);
@@ -237,8 +251,10 @@ TEST(CoupledGauges, A_scene_with_a_structure_records_the_MPM_s_Mises_stress) {
   std::getline(csv, row);
   EXPECT_THAT(header, HasSubstr("c.mises_stress[Pa]"));
   EXPECT_THAT(header, HasSubstr("a.mises_stress[Pa]"));
-  // a (FDM): 0; c (MPM): the reply's value for non-pressure quantities (7).
-  EXPECT_THAT(row, HasSubstr(",7"));
+  EXPECT_THAT(header, HasSubstr("a.mises_stress[Pa],a.position_x[m]"));
+  // a (FDM): 0 and its point; c (MPM): the reply's values (7, and its particle at 0.25).
+  EXPECT_THAT(row, HasSubstr(",7,7,7,0,0.2,0.005,0.005,"));
+  EXPECT_THAT(row, HasSubstr(",7,7,7,7,0.25,0.25,0.25"));
 }
 
 TEST(CoupledGauges, Samples_follow_the_gauge_interval) {
