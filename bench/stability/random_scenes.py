@@ -106,8 +106,11 @@ def generate(seed, steps):
         scene["solver"]["mpm"] = {"shape_function": shape_function}
     if method == "cfdmp":
         w = 5
-        # The FDM zone ends w cells past the face and its 3 ghost layers must fit in the grid.
+        # The FDM zone ends w cells past the face and its 3 ghost layers must fit in the grid;
+        # a plate lies beyond them (the scene check's rule: structures live in the MPM zone).
         face = min(round(rng.uniform(0.6, 0.85) * nx), nx - w - 3)
+        if extra == "solid":
+            face = min(face, math.floor(x0 / h + 1e-9) - w - 3)
         scene["zones"] = {"fdm": {"lower": [0, 0, 0], "upper": [(face + w) * h, upper[1], h]},
                           "mpm": {"lower": [face * h, 0, 0], "upper": upper},
                           "handshake_width": w}

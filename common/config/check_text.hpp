@@ -41,4 +41,30 @@ inline double cell_size(const Domain& d, int axis) {
   return (d.upper[axis] - d.lower[axis]) / d.cells[axis];
 }
 
+// Coordinates closer than this fraction of a cell are equal.
+inline constexpr double kGridTolerance = 1e-6;
+
+inline bool active(const Domain& d, int axis) {
+  return d.cells[axis] > 1;
+}
+
+// The open boxes share volume on every active axis.
+inline bool overlap(const Domain& dom, const Box& a, const Vec3& lower, const Vec3& upper) {
+  for (int i = 0; i < 3; ++i) {
+    if (!active(dom, i)) continue;
+    const double tol = kGridTolerance * cell_size(dom, i);
+    if (a.upper[i] <= lower[i] + tol || a.lower[i] >= upper[i] - tol) return false;
+  }
+  return true;
+}
+
+inline bool within(const Domain& dom, const Box& a, const Vec3& lower, const Vec3& upper) {
+  for (int i = 0; i < 3; ++i) {
+    if (!active(dom, i)) continue;
+    const double tol = kGridTolerance * cell_size(dom, i);
+    if (a.lower[i] < lower[i] - tol || a.upper[i] > upper[i] + tol) return false;
+  }
+  return true;
+}
+
 }  // namespace mpfd::config

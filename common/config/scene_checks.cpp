@@ -11,9 +11,6 @@
 namespace mpfd::config {
 namespace {
 
-// Coordinates closer than this many cell sizes to a grid line are on it.
-constexpr double kGridTolerance = 1e-6;
-
 void check_material(const Scene& s, const std::string& name, const std::string& path,
                     Diagnostics& d) {
   if (find_material(s, name)) return;
@@ -263,6 +260,7 @@ void check_scene(const Scene& scene, Diagnostics& diagnostics) {
   if (!diagnostics.clean("domain")) return;
   check_inside_domain(scene, diagnostics);
   check_zones(scene, diagnostics);
+  check_cfdmp_structures(scene, diagnostics);
   check_spherical_geometry(scene, diagnostics);
   check_afdmp(scene, diagnostics);
   check_following_gauges(scene, diagnostics);

@@ -15,6 +15,10 @@ void check_scene(const Scene& scene, Diagnostics& diagnostics);
 /// of concentric spheres that mpm_solver run advances with the spherical MPM.
 void check_spherical_geometry(const Scene& scene, Diagnostics& diagnostics);
 
+/// solver.method: cfdmp (scene_checks_cfdmp.cpp): every body with a strength
+/// model lies in the MPM zone beyond the FDM zone and its ghost layers.
+void check_cfdmp_structures(const Scene& scene, Diagnostics& diagnostics);
+
 /// solver.method: afdmp (scene_checks_afdmp.cpp): a charge, the FSI zone and
 /// what it holds, and the ball the 1D start of `start: spherical` fills.
 void check_afdmp(const Scene& scene, Diagnostics& diagnostics);

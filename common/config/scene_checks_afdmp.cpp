@@ -14,32 +14,6 @@ namespace {
 // past the front; design §4).
 constexpr double kBallFactor = 1.25;
 
-// Coordinates closer than this many cell sizes are equal.
-constexpr double kTolerance = 1e-6;
-
-bool active(const Domain& d, int axis) {
-  return d.cells[axis] > 1;
-}
-
-// The open boxes share volume on every active axis.
-bool overlap(const Domain& dom, const Box& a, const Vec3& lower, const Vec3& upper) {
-  for (int i = 0; i < 3; ++i) {
-    if (!active(dom, i)) continue;
-    const double tol = kTolerance * cell_size(dom, i);
-    if (a.upper[i] <= lower[i] + tol || a.lower[i] >= upper[i] - tol) return false;
-  }
-  return true;
-}
-
-bool within(const Domain& dom, const Box& a, const Vec3& lower, const Vec3& upper) {
-  for (int i = 0; i < 3; ++i) {
-    if (!active(dom, i)) continue;
-    const double tol = kTolerance * cell_size(dom, i);
-    if (a.lower[i] < lower[i] - tol || a.upper[i] > upper[i] + tol) return false;
-  }
-  return true;
-}
-
 double distance_to_box(const Vec3& p, const Vec3& lower, const Vec3& upper) {
   double sum = 0.0;
   for (int i = 0; i < 3; ++i) {
@@ -59,7 +33,7 @@ void check_fsi_zone(const Scene& s, const MpmZone& zone, Diagnostics& d) {
   std::vector<std::string> inner;
   for (int i = 0; i < 3; ++i) {
     if (!active(s.domain, i)) continue;
-    const double tol = kTolerance * cell_size(s.domain, i);
+    const double tol = kGridTolerance * cell_size(s.domain, i);
     if (zone.lower[i] > s.domain.lower[i] + tol)
       inner.push_back(std::string(kAxisNames[i]) + " = " + num(zone.lower[i]));
     if (zone.upper[i] < s.domain.upper[i] - tol)
@@ -166,7 +140,7 @@ void check_spherical_start(const Scene& s, Diagnostics& d) {
     const double gap = std::abs(ball->center[axis] - plane);
     const BoundaryKind kind = s.boundaries.faces[static_cast<std::size_t>(f)];
     const bool mirror_through_centre =
-        kind == BoundaryKind::symmetry && gap <= kTolerance * cell_size(s.domain, axis);
+        kind == BoundaryKind::symmetry && gap <= kGridTolerance * cell_size(s.domain, axis);
     if (gap < reach && !mirror_through_centre)
       d.error(handoff, what + " meets the " + kFaceNames[f] + " face at " + num(gap) +
                            " m (only symmetry planes through the centre may); expected "

@@ -12,7 +12,9 @@
 namespace mpfd::config::test {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::ElementsAre;
+using ::testing::HasSubstr;
 
 // A 2D scene, 1 m x 1 m, cells of 10 mm, with air and TNT; ten lines, so the
 // sections the tests append start at line 11.
@@ -194,6 +196,36 @@ TEST(SceneChecks, Zones_overlap_by_the_handshake_width) {
   EXPECT_THAT(errors_of(cfdmp(zones)),
               ElementsAre("scene.yaml:12:20: zones.handshake_width: expected the fdm and mpm zones "
                           "to overlap by at least handshake_width = 5 cells along x, got 4"));
+}
+
+// kV6Zones with a plate of 14 mm from x = `x` of steel (with a strength model, or
+// without: a fluid). The FDM zone ends at 0.12 m, its 3 ghost layers at 0.126 m.
+std::string v6_with_plate(double x, bool strength = true) {
+  std::string scene = cfdmp(kV6Zones);
+  const std::string air = "  air: {eos: {type: ideal_gas, gamma: 1.4}}\n";
+  scene.replace(
+      scene.find(air), air.size(),
+      air +
+          "  steel:\n"
+          "    eos: {type: mie_gruneisen, rho0: 7890, C0: 4569, S: 1.49, gamma0: 2.17}\n" +
+          (strength ? "    strength: {type: elastic, shear_modulus: 8.18e10}\n" : ""));
+  return scene + "bodies:\n  - {name: plate, material: steel, density: 7890, pressure: 1.0e5,\n" +
+         "     shape: {box: {lower: [" + std::to_string(x) + ", 0, 0], upper: [" +
+         std::to_string(x + 0.014) + ", 0.5, 0.002]}}}\n";
+}
+
+TEST(SceneChecks, A_structure_lies_in_the_mpm_zone_beyond_the_fdm_zone_and_its_ghost_layers) {
+  EXPECT_NO_THROW((void)parse_scene(v6_with_plate(0.126), "scene.yaml"));
+  for (const double x : {0.124, 0.112, -0.1}) {  // ghost layers, handshake, FDM only
+    EXPECT_THAT(
+        errors_of(v6_with_plate(x)),
+        ElementsAre(AllOf(HasSubstr("bodies[0].shape: expected a body with a strength "
+                                    "model in zones.mpm beyond zones.fdm and its 3 ghost "
+                                    "layers (x >= 0.126 m), got 'plate' (material 'steel')"),
+                          HasSubstr("the FDM holds no solid"))))
+        << "plate at x = " << x;
+  }
+  EXPECT_NO_THROW((void)parse_scene(v6_with_plate(-0.1, false), "scene.yaml"));  // a fluid
 }
 
 TEST(SceneChecks, Zones_lie_inside_the_domain) {

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -16,6 +17,7 @@
 #include "common/core/error.hpp"
 #include "common/core/require.hpp"
 #include "common/io/output_directory.hpp"
+#include "cosim/arrays.hpp"
 #include "cosim/player.hpp"
 #include "cosim/recorder.hpp"
 #include "coupler/run/zone_layout.hpp"
@@ -282,6 +284,52 @@ TEST(CoupledRun, A_face_cell_the_deposits_empty_is_named_as_the_cause_of_the_fdm
   }
   const auto summary = read_json(out / "summary.json");
   EXPECT_GE(summary["details"]["crossing"]["max_face_cell_drain"].get<double>(), 0.5);
+}
+
+/// The x internal force [N] of the interface nodes in the last Exchange the coupler
+/// sent the MPM (recorded), or NaN if none carried them.
+double last_interface_force(const std::filesystem::path& recording) {
+  double force = std::numeric_limits<double>::quiet_NaN();
+  cosim::Player player(recording);
+  while (auto record = player.next()) {
+    const auto& m = record->message;
+    if (record->direction != cosim::v1::DIRECTION_SENT || record->peer != "mpm") continue;
+    for (const auto& a : m.header.arrays())
+      if (a.group() == "interface_nodes" && a.name() == "internal_force")
+        force = cosim::view_array<double>(m, "interface_nodes", "internal_force").values()[0];
+  }
+  return force;
+}
+
+// (4-9)'s push with the MPM's face-cell mass counts a solid there by its own volume
+// (docs/coupler.md, Deviations): steel particles filling cell k-w+1 make the air at
+// rest push with V_c, p V_c / h = 1e5 * 2.5e-6 / 0.025 = 10 N on the face node, not
+// with their mass at the air's density (7890 / 1.2 V_c: 65 750 N, random seed 17).
+TEST(CoupledRun, A_solid_in_the_face_cell_is_pushed_by_the_fdm_with_its_own_volume) {
+  Harness h;
+  h.mpm.face_material = 1;  // steel, the scene's second material
+  h.mpm.face_density = 7890;
+  std::string text = quiet_tube(4.0e-4);
+  const std::string air = "  air: {eos: {type: ideal_gas, gamma: 1.4}}\n";
+  text.replace(text.find(air), air.size(),
+               air +
+                   "  steel:\n"
+                   "    eos: {type: mie_gruneisen, rho0: 7890, C0: 4569, S: 1.49, gamma0: 2.17}\n"
+                   "    strength: {type: elastic, shear_modulus: 8.18e10}\n");
+  text +=
+      "bodies:\n  - {name: plate, material: steel, density: 7890, pressure: 1.0e5,\n"
+      "     shape: {box: {lower: [0.9, 0, 0], upper: [0.95, 0.01, 0.01]}}}\n";
+  const auto scene = config::parse_scene(text, "plate.yaml");
+  ASSERT_EQ(scene.materials[1].name, "steel");
+  auto solvers = h.start_solvers();
+  const auto out = fresh_dir("solid-push");
+  const auto recording = out / "run.mpfdrec";
+  cosim::Recorder recorder(recording);
+  h.hub->attach_recorder(&recorder);
+  (void)run_cfdmp(scene, text, *h.hub, solvers, options(out));
+  h.hub->attach_recorder(nullptr);
+  recorder.close();
+  EXPECT_NEAR(std::abs(last_interface_force(recording)), 10.0, 1e-9);
 }
 
 // The killed solver is named at once (the hub watches the solvers while it waits),

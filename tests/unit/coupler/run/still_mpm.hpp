@@ -11,6 +11,7 @@
 // (a dormant zone), noting the Activate's sim_time. `advance_wall_seconds` is the
 // wall time its AdvanceResult reports (0: faster than any FDM).
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <string>
@@ -54,7 +55,11 @@ struct StillMpm {
   std::atomic<double> activated_at{-1};      ///< sim_time of the Activate [s]; -1: none
   int idle_timeout_ms = 10000;               ///< how long it waits for a request
   double advance_wall_seconds = 0;           ///< AdvanceResult.wall_seconds it reports
-  std::atomic<bool> shut_down{false};        ///< it got Shutdown (was still serving)
+  /// Its face-cell particles (face_particles): material index and density [kg/m^3] (< 0:
+  /// `density`); asked for their volume and material too, it gives half a cell's each.
+  std::uint32_t face_material = 0;
+  double face_density = -1;
+  std::atomic<bool> shut_down{false};  ///< it got Shutdown (was still serving)
 };
 
 inline std::int64_t box_count(const cosim::v1::IndexBox& box, int shrink_active_by,
@@ -145,10 +150,18 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
           } else if (name == "face_particles") {  // 2 per cell; 1D: the one face cell holds them
             const auto n = static_cast<std::size_t>(2 * box_count(box, 0, 0));
             result.mutable_exported()->set_count(n);
+            const double rho = mpm.face_density < 0 ? mpm.density : mpm.face_density;
             cosim::add_array(reply, {name, "mass", {}, "kg"},
-                             std::vector<double>(n, 0.5 * mpm.density * mpm.cell_volume));
+                             std::vector<double>(n, 0.5 * rho * mpm.cell_volume));
             cosim::add_array(reply, {name, "position", {n, 3}, "m"},
                              std::vector<double>(3 * n, 0.0));
+            const auto& asked = op.export_region().quantities();
+            if (std::find(asked.begin(), asked.end(), "volume") != asked.end()) {
+              cosim::add_array(reply, {name, "volume", {}, "m^3"},
+                               std::vector<double>(n, 0.5 * mpm.cell_volume));
+              cosim::add_array(reply, {name, "material", {}, "1"},
+                               std::vector<std::uint32_t>(n, mpm.face_material));
+            }
           } else {  // mpm_zone: 2 particles per cell
             const auto n = static_cast<std::size_t>(2 * box_count(box, 0, 0));
             result.mutable_exported()->set_count(n);
