@@ -130,20 +130,25 @@ std::vector<std::string> first_request_of_each_step(const std::filesystem::path&
   return first;
 }
 
-std::vector<std::string> first_requests_with_mpm_advance_of(double wall_seconds) {
-  Harness h;
-  h.mpm.advance_wall_seconds = wall_seconds;
-  const std::string text = quiet_tube(4.0e-4);
-  const auto scene = config::parse_scene(text, "quiet.yaml");
+/// Runs scene `text` with the harness's solvers to its end, recording every message
+/// into the fresh folder `name`; returns the recording.
+std::filesystem::path recorded_run(Harness& h, const std::string& text, const std::string& name) {
+  const auto scene = config::parse_scene(text, name + ".yaml");
   auto solvers = h.start_solvers();
-  const auto out = fresh_dir("send-order");
+  const auto out = fresh_dir(name);
   const auto recording = out / "run.mpfdrec";
   cosim::Recorder recorder(recording);
   h.hub->attach_recorder(&recorder);
   (void)run_cfdmp(scene, text, *h.hub, solvers, options(out));
   h.hub->attach_recorder(nullptr);
   recorder.close();
-  return first_request_of_each_step(recording);
+  return recording;
+}
+
+std::vector<std::string> first_requests_with_mpm_advance_of(double wall_seconds) {
+  Harness h;
+  h.mpm.advance_wall_seconds = wall_seconds;
+  return first_request_of_each_step(recorded_run(h, quiet_tube(4.0e-4), "send-order"));
 }
 
 TEST(CoupledRun, The_solver_slower_in_the_last_advance_gets_its_request_first) {
@@ -319,16 +324,8 @@ TEST(CoupledRun, A_solid_in_the_face_cell_is_pushed_by_the_fdm_with_its_own_volu
   text +=
       "bodies:\n  - {name: plate, material: steel, density: 7890, pressure: 1.0e5,\n"
       "     shape: {box: {lower: [0.9, 0, 0], upper: [0.95, 0.01, 0.01]}}}\n";
-  const auto scene = config::parse_scene(text, "plate.yaml");
-  ASSERT_EQ(scene.materials[1].name, "steel");
-  auto solvers = h.start_solvers();
-  const auto out = fresh_dir("solid-push");
-  const auto recording = out / "run.mpfdrec";
-  cosim::Recorder recorder(recording);
-  h.hub->attach_recorder(&recorder);
-  (void)run_cfdmp(scene, text, *h.hub, solvers, options(out));
-  h.hub->attach_recorder(nullptr);
-  recorder.close();
+  ASSERT_EQ(config::parse_scene(text, "plate.yaml").materials[1].name, "steel");
+  const auto recording = recorded_run(h, text, "solid-push");
   EXPECT_NEAR(std::abs(last_interface_force(recording)), 10.0, 1e-9);
 }
 
