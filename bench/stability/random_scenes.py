@@ -110,7 +110,13 @@ def generate(seed, steps):
         # a plate lies beyond them (the scene check's rule: structures live in the MPM zone).
         face = min(round(rng.uniform(0.6, 0.85) * nx), nx - w - 3)
         if extra == "solid":
-            face = min(face, math.floor(x0 / h + 1e-9) - w - 3)
+            # At least 2 cells below the face (the strip and deposit layers); on the
+            # smallest grids the plate then moves right, beyond the ghost layers.
+            face = max(2, min(face, math.floor(x0 / h + 1e-9) - w - 3))
+            plate = bodies[1]["shape"]["box"]
+            shift = max(0.0, (face + w + 3) * h - plate["lower"][0])
+            plate["lower"][0] += shift
+            plate["upper"][0] += shift
         scene["zones"] = {"fdm": {"lower": [0, 0, 0], "upper": [(face + w) * h, upper[1], h]},
                           "mpm": {"lower": [face * h, 0, 0], "upper": upper},
                           "handshake_width": w}

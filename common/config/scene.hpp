@@ -248,4 +248,13 @@ struct Scene {
 /// The material called `name`, or nullptr.
 const Material* find_material(const Scene& scene, std::string_view name);
 
+/// A solid: the material has a strength model.
+[[nodiscard]] bool has_strength(const Material& material);
+/// The scene has a solid material (a structure for the MPM).
+[[nodiscard]] bool has_structure(const Scene& scene);
+
+/// Ghost layers the FDM reads beyond its zone in CFDMP: its sweep reads i-3 ... i+3
+/// (fdm_solver/pencil_io.hpp kGhost); the coupler fills them from the MPM's nodes.
+inline constexpr int kFdmGhostLayers = 3;
+
 }  // namespace mpfd::config

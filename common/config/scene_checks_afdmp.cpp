@@ -1,7 +1,6 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "common/config/check_text.hpp"
@@ -56,7 +55,7 @@ void check_afdmp_regions(const Scene& s, Diagnostics& d) {
   }
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Material* m = find_material(s, s.bodies[i].state.material);
-    if (!m || std::holds_alternative<NoStrength>(m->strength)) continue;
+    if (!m || !has_strength(*m)) continue;
     if (!zone) {
       d.error(item("bodies", i),
               "a body with a strength model needs zones.mpm around it with solver.method afdmp "

@@ -1,17 +1,9 @@
 #include <string>
-#include <variant>
 
 #include "common/config/check_text.hpp"
 #include "common/config/scene_checks.hpp"
 
 namespace mpfd::config {
-namespace {
-
-// The FDM's ghost layers beyond its zone (its sweep reads i±3; coupler/run/zone_layout).
-constexpr int kGhostLayers = 3;
-
-}  // namespace
-
 void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
   if (s.solver.method != Method::cfdmp || !s.zones || !s.zones->fdm || !s.zones->mpm) return;
   if (!d.clean("zones") || !d.clean("bodies")) return;
@@ -21,7 +13,7 @@ void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
   std::string expected;
   for (int i = 0; i < 3; ++i) {
     if (!active(s.domain, i)) continue;
-    const double ghosts = kGhostLayers * cell_size(s.domain, i);
+    const double ghosts = kFdmGhostLayers * cell_size(s.domain, i);
     const double tol = kGridTolerance * cell_size(s.domain, i);
     if (fdm.upper[i] < s.domain.upper[i] - tol) {
       upper[i] += ghosts;
@@ -34,12 +26,12 @@ void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
   }
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Material* m = find_material(s, s.bodies[i].state.material);
-    if (!m || std::holds_alternative<NoStrength>(m->strength)) continue;
+    if (!m || !has_strength(*m)) continue;
     const Box box = bounding_box(s.bodies[i].shape);
     if (!overlap(s.domain, box, lower, upper)) continue;
     d.error(item("bodies", i) + ".shape",
             "expected a body with a strength model in zones.mpm beyond zones.fdm and its " +
-                std::to_string(kGhostLayers) + " ghost layers (" + expected + " m), got '" +
+                std::to_string(kFdmGhostLayers) + " ghost layers (" + expected + " m), got '" +
                 s.bodies[i].name + "' (material '" + m->name + "') from " + text(box.lower) +
                 " to " + text(box.upper) + ", reaching into " + text(lower) + " to " + text(upper) +
                 ": the FDM holds no solid (its cells take the scene's initial material and the "

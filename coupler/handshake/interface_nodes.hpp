@@ -96,8 +96,7 @@ void outer_node_terms(const CellStates<Dim>& strip, std::span<const double> stri
 /// per face cell V = m_t / ρ_outer, m_t the MPM's fluid particles' mass in
 /// cell k-w+1 (region face_particles), plus the volume V_s of its solid
 /// particles: a solid resists with its stress on its own volume, and its mass
-/// at the fluid's density would be thousands of cell volumes (a steel plate at
-/// the face was flung off by the air at rest, docs/coupler.md). V_c =
+/// at the fluid's density would be thousands of cell volumes. V_c =
 /// `cell_volume` where that cell holds no particle. Writes `volume` (one per
 /// face cell).
 template <int Dim>

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <variant>
 
 #include "common/core/error.hpp"
 
@@ -92,7 +91,7 @@ void place_fsi_zone(const config::Scene& scene, AfdmpLayout& layout) {
 
 bool has_strength(const config::Scene& scene, const config::Body& body) {
   const config::Material* m = config::find_material(scene, body.state.material);
-  return m != nullptr && !std::holds_alternative<config::NoStrength>(m->strength);
+  return m != nullptr && config::has_strength(*m);
 }
 
 }  // namespace

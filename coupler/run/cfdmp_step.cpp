@@ -100,8 +100,8 @@ CfdmpStep<Dim>::CfdmpStep(const config::Scene& scene, const ZoneLayout& layout,
   face_mass_.assign(faces, 0);
   face_solid_volume_.assign(faces, 0);
   push_volume_.assign(faces, 0);
-  solid_ = solid_materials(scene);
-  any_solid_ = std::ranges::find(solid_, 1) != solid_.end();
+  solid_ = material_strength_flags(scene);
+  any_solid_ = config::has_structure(scene);
   crossed_energy_.assign(faces, 0);
   crossed_momentum_.assign(faces, Vec::Zero());
   parcels_ = handshake::Parcels<Dim>(faces);
@@ -130,7 +130,7 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   std::fill(returned_energy_.begin(), returned_energy_.end(), 0.0);
   std::fill(returned_momentum_.begin(), returned_momentum_.end(), Vec::Zero());
   const handshake::Amounts<Dim> returned{returned_mass_, returned_momentum_, returned_energy_};
-  if (flux_due_) add_face_fluxes(returned);
+  if (flux_due_) named_drain([&] { add_face_fluxes(returned); });
   add_deposit(fdm);
   if (plan.advance) {
     if (plan.mpm) add_ghost_cells(fdm, plan);
@@ -172,7 +172,8 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
     mpm_ops_.push_back(Op::discard);
   }
   // Before the removal: the particles it takes lie outside cell k-w+1 anyway, and its
-  // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read).
+  // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read);
+  // in a scene with a solid this export's own material array does so (docs/coupler.md).
   if (any_solid_)
     add_export(mpm, "face_particles", {"mass", "position", "volume", "material"});
   else
@@ -354,7 +355,7 @@ std::string CfdmpStep<Dim>::empty_ghost_cell_text(std::size_t c, const StepPlan&
 
 template <int Dim>
 std::string CfdmpStep<Dim>::face_drain_text() const {
-  auto cell = strip_layout_.inner_cell[drain_.last().face_cell];  // k-w+1; k-w is outside
+  auto cell = strip_layout_.inner_cell[drain_.worst().face_cell];  // k-w+1; k-w is outside
   cell[strip_layout_.face.axis] -= strip_layout_.face.side;
   return drain_.cause_text(cell_text(cell));
 }
@@ -416,8 +417,10 @@ void CfdmpStep<Dim>::add_interface_nodes(cosim::Message& mpm) {
   force.resize(n);
   std::span<const double> push_volume;  // T's V_c until the MPM has told its face mass
   if (have_face_mass_) {
-    handshake::face_push_volume<Dim>(face_mass_, face_solid_volume_, strip_now_.rho, strip_layout_,
-                                     geometry_.cell_volume, push_volume_);
+    named_drain([&] {
+      handshake::face_push_volume<Dim>(face_mass_, face_solid_volume_, strip_now_.rho,
+                                       strip_layout_, geometry_.cell_volume, push_volume_);
+    });
     push_volume = push_volume_;
   }
   handshake::interface_node_terms<Dim>({strip_now_.rho, strip_now_.momentum, strip_now_.energy},

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "common/config/scene.hpp"
+#include "common/core/error.hpp"
 #include "cosim/message.hpp"
 #include "coupler/handshake/ghost_cells.hpp"
 #include "coupler/handshake/injection_flux.hpp"
@@ -102,7 +103,7 @@ class CfdmpStep {
   [[nodiscard]] const Totals& dormant_outflow() const { return dormant_outflow_; }
   [[nodiscard]] const SolverFeatures& features() const { return features_; }
   [[nodiscard]] const StepTraffic& traffic() const { return traffic_; }
-  /// Why an FDM cell beside the coupling face emptied, when the last deposit took
+  /// Why an FDM cell beside the coupling face emptied, when one of the last two deposits took
   /// most of one (face_drain.hpp); empty otherwise.
   [[nodiscard]] std::string face_drain_text() const;
   /// The largest share of a face cell's mass any deposit of the run took.
@@ -151,6 +152,18 @@ class CfdmpStep {
   void add_audit_export(cosim::Message& fdm, const char* region) const;
   void add_cell_apply(cosim::Message& fdm, const char* region, cosim::v1::ApplyRegion::Mode mode);
   void add_face_fluxes(const handshake::Amounts<Dim>& returned);
+  /// Runs `kernel` on the strip cells; the Error it throws for a face cell left without
+  /// mass gets the cause when the deposits were emptying one (face_drain.hpp).
+  template <class Kernel>
+  void named_drain(Kernel&& kernel) const {
+    try {
+      kernel();
+    } catch (const Error& error) {
+      const std::string cause = face_drain_text();
+      if (cause.empty()) throw;
+      throw Error(with_cause(error.what(), cause));
+    }
+  }
 
   const config::Scene& scene_;
   ZoneLayout layout_;

@@ -80,8 +80,8 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   if (outer_nodes)
     *mpm.add_regions() = make_region("outer_nodes", v1::REGION_KIND_NODES, layout.outer_nodes,
                                      {"mass", "momentum", "internal_force"});
-  const auto solid = solid_materials(scene);
-  if (std::ranges::find(solid, 1) != solid.end())
+  // The quantities CfdmpStep asks face_particles for (its any_solid_).
+  if (config::has_structure(scene))
     *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
                                      {"mass", "position", "volume", "material"});
   else
@@ -378,12 +378,11 @@ CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout,
     return loop.run();
   } catch (const Error& error) {
     record_failure();
-    // An FDM cell beside the face that the deposits were emptying is the cause
-    // behind the negative density the FDM (or the coupler's strip checks) reports.
+    // An FDM cell beside the face that the deposits were emptying is the cause behind
+    // the FDM's stop (the coupler's own strip checks add it where they throw).
     const std::string cause = loop.face_drain_text();
-    if (cause.empty()) throw;
-    std::string text = error.what();
-    throw Error(text + (text.ends_with('.') ? " " : ". ") + cause);
+    if (cause.empty() || !hub.reported_fatal_error("fdm")) throw;
+    throw Error(with_cause(error.what(), cause));
   } catch (...) {
     record_failure();
     throw;

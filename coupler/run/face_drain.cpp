@@ -7,6 +7,10 @@
 
 namespace mpfd::coupler {
 
+std::string with_cause(const std::string& error, const std::string& cause) {
+  return error + (error.ends_with('.') ? " " : ". ") + cause;
+}
+
 void FaceDrainWatch::observe(std::size_t face_cell, double density, double added_density,
                              double returned_mass, double cell_volume) {
   if (!(density > 0) || !(added_density < 0)) return;
@@ -21,16 +25,17 @@ void FaceDrainWatch::observe(std::size_t face_cell, double density, double added
 }
 
 std::string FaceDrainWatch::cause_text(const std::string& cell) const {
-  if (last_.share < kNamedShare) return {};
-  const long percent = std::lround(100 * last_.share);
-  return "Cause: the coupler's last deposit took " + std::to_string(percent) +
+  const FaceDrain& drain = worst();
+  if (drain.share < kNamedShare) return {};
+  const long percent = std::lround(100 * drain.share);
+  return "Cause: a deposit of the coupler took " + std::to_string(percent) +
          " % of the mass of FDM cell " + cell + " beside the coupling face (density " +
-         number_text(last_.density, 3) +
+         number_text(drain.density, 3) +
          " kg/m^3 before it): the FDM's flow out of the MPM zone through that face in the step, " +
-         number_text(last_.taken_back, 3) +
+         number_text(drain.taken_back, 3) +
          " kg, is taken back because particles crossing the face carry that material, and the "
          "particles that crossed brought " +
-         number_text(last_.particle_mass, 3) +
+         number_text(drain.particle_mass, 3) +
          " kg. The MPM zone's gas leaves it more slowly than the FDM's, so the FDM cell empties; a "
          "smaller time.cfl or a finer grid does not cure this (docs/stability.md, random scenes "
          "case 5). Keep gas that flows out of the MPM zone on the FDM's side: move the zone face "

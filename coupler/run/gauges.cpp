@@ -45,10 +45,7 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
   mpm_ = {"mpm", {}, {"density", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
   // A structure's stress (V5, T Figs. 3.12-3.14): the MPM samples it; an Euler
   // fluid has no deviatoric stress, so the FDM's samples keep 0.
-  const bool structures =
-      std::any_of(scene.materials.begin(), scene.materials.end(), [](const config::Material& m) {
-        return !std::holds_alternative<config::NoStrength>(m.strength);
-      });
+  const bool structures = config::has_structure(scene);
   if (structures) mpm_.quantities.push_back("mises_stress");
   // Where the MPM read each gauge (its nearest or followed particle), as mpm_solver run's
   // gauges.csv; the FDM reads the cell holding the gauge's point, which is recorded.

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <variant>
 
 #include "common/core/error.hpp"
 
@@ -22,7 +21,7 @@ InjectedMaterial::InjectedMaterial(const config::Scene& scene) : scene_(scene) {
   fluids_.push_back(index_of(scene, scene.initial.material));
   for (const auto& body : scene.bodies) {
     const std::uint32_t m = index_of(scene, body.state.material);
-    if (std::holds_alternative<config::NoStrength>(scene.materials[m].strength) &&
+    if (!config::has_strength(scene.materials[m]) &&
         std::find(fluids_.begin(), fluids_.end(), m) == fluids_.end())
       fluids_.push_back(m);
   }

@@ -1,7 +1,6 @@
 #include "coupler/run/zone_layout.hpp"
 
 #include <cmath>
-#include <variant>
 
 #include "common/core/error.hpp"
 
@@ -32,11 +31,10 @@ bool mpm_reaches_outer_nodes(const config::Scene& scene) {
   return scene.solver.mpm.shape_function != config::ShapeFunction::linear;
 }
 
-std::vector<char> solid_materials(const config::Scene& scene) {
-  std::vector<char> solid;
-  for (const auto& material : scene.materials)
-    solid.push_back(!std::holds_alternative<config::NoStrength>(material.strength));
-  return solid;
+std::vector<char> material_strength_flags(const config::Scene& scene) {
+  std::vector<char> flags;
+  for (const auto& material : scene.materials) flags.push_back(config::has_strength(material));
+  return flags;
 }
 
 std::string box_text(const WireBox& box) {

@@ -35,9 +35,8 @@ inline WireBox along(WireBox box, int a, std::int64_t lo, std::int64_t hi) {
 /// The axes as messages name them.
 inline constexpr const char* kAxisNames[] = {"x", "y", "z"};
 
-/// FDM ghost layers the coupler sets each step: the sweep reads i-3 ... i+3
-/// (fdm_solver/pencil_io.hpp kGhost).
-inline constexpr std::int64_t kFdmGhostLayers = 3;
+/// FDM ghost layers the coupler sets each step (the scene check keeps structures out of them).
+inline constexpr std::int64_t kFdmGhostLayers = config::kFdmGhostLayers;
 /// Cell layers outside the MPM zone a crossing particle may land in (one
 /// cell per step under the CFL limit, one more for safety).
 inline constexpr std::int64_t kDepositLayers = 2;
@@ -75,10 +74,10 @@ struct ZoneLayout {
 /// (handshake::outer_node_terms). Linear shapes stop at the face node layer.
 [[nodiscard]] bool mpm_reaches_outer_nodes(const config::Scene& scene);
 
-/// Whether material m of the scene has strength (a solid), per material: the
-/// FDM's push on the face nodes counts a solid by its volume (face_push_volume),
-/// so face_particles then also carries volume and material.
-[[nodiscard]] std::vector<char> solid_materials(const config::Scene& scene);
+/// Per scene material, 1 if it has a strength model (a solid): the FDM's push on
+/// the face nodes counts a solid by its volume (face_push_volume), so in a scene
+/// with one (config::has_structure) face_particles also carries volume and material.
+[[nodiscard]] std::vector<char> material_strength_flags(const config::Scene& scene);
 
 /// "[lo0, hi0) x [lo1, hi1) x [lo2, hi2)", for messages.
 [[nodiscard]] std::string box_text(const WireBox& box);

@@ -20,7 +20,7 @@ namespace {
 void without_structures(config::Scene& scene) {
   std::erase_if(scene.bodies, [&](const config::Body& body) {
     const config::Material* m = config::find_material(scene, body.state.material);
-    return m != nullptr && !std::holds_alternative<config::NoStrength>(m->strength);
+    return m != nullptr && config::has_strength(*m);
   });
 }
 

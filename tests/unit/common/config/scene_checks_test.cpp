@@ -198,10 +198,11 @@ TEST(SceneChecks, Zones_overlap_by_the_handshake_width) {
                           "to overlap by at least handshake_width = 5 cells along x, got 4"));
 }
 
-// kV6Zones with a plate of 14 mm from x = `x` of steel (with a strength model, or
-// without: a fluid). The FDM zone ends at 0.12 m, its 3 ghost layers at 0.126 m.
-std::string v6_with_plate(double x, bool strength = true) {
-  std::string scene = cfdmp(kV6Zones);
+// cfdmp(zones) with a body of steel (with a strength model, or without: a fluid) in
+// `box` ("{lower: [...], upper: [...]}").
+std::string with_steel_body(const std::string& zones, const std::string& box,
+                            bool strength = true) {
+  std::string scene = cfdmp(zones);
   const std::string air = "  air: {eos: {type: ideal_gas, gamma: 1.4}}\n";
   scene.replace(
       scene.find(air), air.size(),
@@ -210,22 +211,51 @@ std::string v6_with_plate(double x, bool strength = true) {
           "    eos: {type: mie_gruneisen, rho0: 7890, C0: 4569, S: 1.49, gamma0: 2.17}\n" +
           (strength ? "    strength: {type: elastic, shear_modulus: 8.18e10}\n" : ""));
   return scene + "bodies:\n  - {name: plate, material: steel, density: 7890, pressure: 1.0e5,\n" +
-         "     shape: {box: {lower: [" + std::to_string(x) + ", 0, 0], upper: [" +
-         std::to_string(x + 0.014) + ", 0.5, 0.002]}}}\n";
+         "     shape: {box: " + box + "}}\n";
 }
 
+// A plate of 14 mm across the V6 domain from x = `x`.
+std::string plate_from(double x) {
+  return "{lower: [" + std::to_string(x) + ", 0, 0], upper: [" + std::to_string(x + 0.014) +
+         ", 0.5, 0.002]}";
+}
+
+const auto kRefusedStructure = [](const std::string& beyond) {
+  return AllOf(HasSubstr("bodies[0].shape: expected a body with a strength model in zones.mpm "
+                         "beyond zones.fdm and its 3 ghost layers (" +
+                         beyond + " m), got 'plate' (material 'steel')"),
+               HasSubstr("the FDM holds no solid"));
+};
+
 TEST(SceneChecks, A_structure_lies_in_the_mpm_zone_beyond_the_fdm_zone_and_its_ghost_layers) {
-  EXPECT_NO_THROW((void)parse_scene(v6_with_plate(0.126), "scene.yaml"));
-  for (const double x : {0.124, 0.112, -0.1}) {  // ghost layers, handshake, FDM only
-    EXPECT_THAT(
-        errors_of(v6_with_plate(x)),
-        ElementsAre(AllOf(HasSubstr("bodies[0].shape: expected a body with a strength "
-                                    "model in zones.mpm beyond zones.fdm and its 3 ghost "
-                                    "layers (x >= 0.126 m), got 'plate' (material 'steel')"),
-                          HasSubstr("the FDM holds no solid"))))
+  // V6: the FDM zone ends at x = 0.12 m, its 3 ghost layers at 0.126 m.
+  EXPECT_NO_THROW((void)parse_scene(with_steel_body(kV6Zones, plate_from(0.126)), "scene.yaml"));
+  for (const double x : {0.124, 0.112, -0.1})  // ghost layers, handshake, FDM only
+    EXPECT_THAT(errors_of(with_steel_body(kV6Zones, plate_from(x))),
+                ElementsAre(kRefusedStructure("x >= 0.126")))
         << "plate at x = " << x;
-  }
-  EXPECT_NO_THROW((void)parse_scene(v6_with_plate(-0.1, false), "scene.yaml"));  // a fluid
+  const std::string fluid = with_steel_body(kV6Zones, plate_from(-0.1), false);
+  EXPECT_NO_THROW((void)parse_scene(fluid, "scene.yaml"));
+}
+
+TEST(SceneChecks, A_structure_lies_beyond_the_ghost_layers_on_either_side_and_axis) {
+  // The MPM zone below the FDM's along x: ghost layers down to x = -0.136 m.
+  const std::string below = R"(  fdm: {lower: [-0.13, 0, 0], upper: [0.16, 0.5, 0.002]}
+  mpm: {lower: [-0.18, 0, 0], upper: [-0.12, 0.5, 0.002]}
+)";
+  EXPECT_NO_THROW((void)parse_scene(with_steel_body(below, plate_from(-0.15)), "scene.yaml"));
+  EXPECT_THAT(errors_of(with_steel_body(below, plate_from(-0.148))),
+              ElementsAre(kRefusedStructure("x <= -0.136")));
+  // Across y: the FDM zone up to y = 0.3 m, ghost layers to 0.306 m.
+  const std::string across_y = R"(  fdm: {lower: [-0.18, 0, 0], upper: [0.16, 0.3, 0.002]}
+  mpm: {lower: [-0.18, 0.29, 0], upper: [0.16, 0.5, 0.002]}
+)";
+  const auto slab_from = [](const std::string& y) {
+    return "{lower: [-0.18, " + y + ", 0], upper: [0.16, 0.45, 0.002]}";
+  };
+  EXPECT_NO_THROW((void)parse_scene(with_steel_body(across_y, slab_from("0.306")), "scene.yaml"));
+  EXPECT_THAT(errors_of(with_steel_body(across_y, slab_from("0.304"))),
+              ElementsAre(kRefusedStructure("y >= 0.306")));
 }
 
 TEST(SceneChecks, Zones_lie_inside_the_domain) {

@@ -194,13 +194,14 @@ TEST(InterfaceNodes2D, Push_volume_counts_a_solid_by_its_own_volume) {
   const std::size_t faces = layout.face_cells(), n = layout.box.count();
   const std::vector<double> rho(n, 1.2);
   // Face cell 0: air only; 1: steel (7830 kg/m^3) on 0.6 of the cell, air on 0.4;
-  // 2: steel only.
+  // 2: steel only, on half the cell (not V_c, the volume of an empty face cell).
   const std::vector<double> air_mass{1.2 * g.cell_volume, 1.2 * 0.4 * g.cell_volume, 0.0};
-  const std::vector<double> solid_volume{0.0, 0.6 * g.cell_volume, g.cell_volume};
+  const std::vector<double> solid_volume{0.0, 0.6 * g.cell_volume, 0.5 * g.cell_volume};
   std::vector<double> volume(faces);
   face_push_volume<2>(air_mass, solid_volume, rho, layout, g.cell_volume, volume);
+  const std::vector<double> expected{g.cell_volume, g.cell_volume, 0.5 * g.cell_volume};
   for (std::size_t t = 0; t < faces; ++t)
-    EXPECT_NEAR(volume[t], g.cell_volume, 1e-15 * g.cell_volume) << "face cell " << t;
+    EXPECT_NEAR(volume[t], expected[t], 1e-15 * g.cell_volume) << "face cell " << t;
 }
 
 TEST(InterfaceNodes2D, Node_box_must_lie_on_the_face) {

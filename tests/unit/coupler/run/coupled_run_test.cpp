@@ -307,13 +307,15 @@ double last_interface_force(const std::filesystem::path& recording) {
 }
 
 // (4-9)'s push with the MPM's face-cell mass counts a solid there by its own volume
-// (docs/coupler.md, Deviations): steel particles filling cell k-w+1 make the air at
-// rest push with V_c, p V_c / h = 1e5 * 2.5e-6 / 0.025 = 10 N on the face node, not
-// with their mass at the air's density (7890 / 1.2 V_c: 65 750 N, random seed 17).
+// (docs/coupler.md, Deviations): two steel particles of 0.3 V_c each in cell k-w+1 make
+// the air at rest push with 0.6 V_c, p 0.6 V_c / h = 1e5 * 1.5e-6 / 0.025 = 6 N on the
+// face node; not with their mass at the air's density (7890 / 1.2 V_c: 65 750 N, random
+// seed 17), nor with V_c as if the cell were empty (10 N).
 TEST(CoupledRun, A_solid_in_the_face_cell_is_pushed_by_the_fdm_with_its_own_volume) {
   Harness h;
   h.mpm.face_material = 1;  // steel, the scene's second material
   h.mpm.face_density = 7890;
+  h.mpm.face_volume = 0.3 * h.mpm.cell_volume;
   std::string text = quiet_tube(4.0e-4);
   const std::string air = "  air: {eos: {type: ideal_gas, gamma: 1.4}}\n";
   text.replace(text.find(air), air.size(),
@@ -326,7 +328,7 @@ TEST(CoupledRun, A_solid_in_the_face_cell_is_pushed_by_the_fdm_with_its_own_volu
       "     shape: {box: {lower: [0.9, 0, 0], upper: [0.95, 0.01, 0.01]}}}\n";
   ASSERT_EQ(config::parse_scene(text, "plate.yaml").materials[1].name, "steel");
   const auto recording = recorded_run(h, text, "solid-push");
-  EXPECT_NEAR(std::abs(last_interface_force(recording)), 10.0, 1e-9);
+  EXPECT_NEAR(std::abs(last_interface_force(recording)), 6.0, 1e-9);
 }
 
 // The killed solver is named at once (the hub watches the solvers while it waits),

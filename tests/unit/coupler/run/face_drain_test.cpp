@@ -29,7 +29,10 @@ TEST(FaceDrainWatch, Keeps_the_face_cell_the_last_deposit_took_the_largest_share
   EXPECT_DOUBLE_EQ(watch.run_max_share(), 0.6);
 }
 
-TEST(FaceDrainWatch, A_new_deposit_forgets_the_last_one_but_the_run_keeps_its_largest_share) {
+// The FDM, or the coupler's strip checks, find an emptied cell in the step after the
+// deposit (or after an output's exchange without advance): the deposit before the
+// last still counts.
+TEST(FaceDrainWatch, The_last_two_deposits_count_and_the_run_keeps_its_largest_share) {
   FaceDrainWatch watch;
   watch.start_deposit();
   watch.observe(3, 1.0, -0.9, -0.9 * kCellVolume, kCellVolume);
@@ -37,6 +40,11 @@ TEST(FaceDrainWatch, A_new_deposit_forgets_the_last_one_but_the_run_keeps_its_la
   watch.observe(3, 1.0, -0.1, -0.5 * kCellVolume, kCellVolume);
   EXPECT_DOUBLE_EQ(watch.last().share, 0.1);
   EXPECT_NEAR(watch.last().particle_mass, 0.4 * kCellVolume, 1e-18);
+  EXPECT_DOUBLE_EQ(watch.worst().share, 0.9);
+  EXPECT_NE(watch.cause_text("(3, 0, 0)"), "");
+  watch.start_deposit();
+  EXPECT_DOUBLE_EQ(watch.worst().share, 0.1);
+  EXPECT_EQ(watch.cause_text("(3, 0, 0)"), "");
   EXPECT_DOUBLE_EQ(watch.run_max_share(), 0.9);
 }
 
@@ -46,9 +54,13 @@ TEST(FaceDrainWatch, Names_the_cause_only_from_half_the_cells_mass_on) {
   watch.observe(0, 1.0, -0.49, -0.49 * kCellVolume, kCellVolume);
   EXPECT_EQ(watch.cause_text("(18, 4, 0)"), "");
   watch.start_deposit();
+  watch.observe(0, 1.0, -0.5, -0.5 * kCellVolume, kCellVolume);
+  EXPECT_NE(watch.cause_text("(18, 4, 0)"), "");
+  watch.start_deposit();
   watch.observe(0, 0.411, -0.415, -0.415 * kCellVolume, kCellVolume);
   EXPECT_THAT(watch.cause_text("(18, 4, 0) at (1.17, 0.285, 0.0317) m"),
-              AllOf(HasSubstr("took 101 % of the mass of FDM cell (18, 4, 0) at (1.17, 0.285, "
+              AllOf(HasSubstr("Cause: a deposit of the coupler took 101 % of the mass of FDM cell "
+                              "(18, 4, 0) at (1.17, 0.285, "
                               "0.0317) m beside the coupling face (density 0.411 kg/m^3"),
                     HasSubstr("0.00083 kg, is taken back"),
                     HasSubstr("the particles that crossed brought 0 kg"),

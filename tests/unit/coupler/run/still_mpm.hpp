@@ -55,10 +55,11 @@ struct StillMpm {
   std::atomic<double> activated_at{-1};      ///< sim_time of the Activate [s]; -1: none
   int idle_timeout_ms = 10000;               ///< how long it waits for a request
   double advance_wall_seconds = 0;           ///< AdvanceResult.wall_seconds it reports
-  /// Its face-cell particles (face_particles): material index and density [kg/m^3] (< 0:
-  /// `density`); asked for their volume and material too, it gives half a cell's each.
+  /// Its face-cell particles (face_particles, 2 per cell): material index, density
+  /// [kg/m^3] (< 0: `density`) and, when asked for it, volume [m^3] (< 0: half a cell).
   std::uint32_t face_material = 0;
   double face_density = -1;
+  double face_volume = -1;
   std::atomic<bool> shut_down{false};  ///< it got Shutdown (was still serving)
 };
 
@@ -158,7 +159,8 @@ inline void serve_still_mpm(zmq::context_t& context, const std::string& endpoint
             const auto& asked = op.export_region().quantities();
             if (std::find(asked.begin(), asked.end(), "volume") != asked.end()) {
               cosim::add_array(reply, {name, "volume", {}, "m^3"},
-                               std::vector<double>(n, 0.5 * mpm.cell_volume));
+                               std::vector<double>(n, mpm.face_volume < 0 ? 0.5 * mpm.cell_volume
+                                                                          : mpm.face_volume));
               cosim::add_array(reply, {name, "material", {}, "1"},
                                std::vector<std::uint32_t>(n, mpm.face_material));
             }
