@@ -4,6 +4,7 @@
 #include "common/config/scene_checks.hpp"
 
 namespace mpfd::config {
+
 void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
   if (s.solver.method != Method::cfdmp || !s.zones || !s.zones->fdm || !s.zones->mpm) return;
   if (!d.clean("zones") || !d.clean("bodies")) return;
