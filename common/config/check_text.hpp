@@ -9,7 +9,6 @@
 
 namespace mpfd::config {
 
-inline constexpr const char* kAxisNames[] = {"x", "y", "z"};
 inline constexpr const char* kFaceNames[] = {"x_lower", "x_upper", "y_lower",
                                              "y_upper", "z_lower", "z_upper"};
 

@@ -253,6 +253,9 @@ const Material* find_material(const Scene& scene, std::string_view name);
 /// The scene has a solid material (a structure for the MPM).
 [[nodiscard]] bool has_structure(const Scene& scene);
 
+/// The axes as messages name them.
+inline constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
 /// Ghost layers the FDM reads beyond its zone in CFDMP: its sweep reads i-3 ... i+3
 /// (fdm_solver/pencil_io.hpp kGhost); the coupler fills them from the MPM's nodes.
 inline constexpr int kFdmGhostLayers = 3;

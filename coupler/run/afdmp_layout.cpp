@@ -69,8 +69,8 @@ void place_fsi_zone(const config::Scene& scene, AfdmpLayout& layout) {
   for (int b = 0; b < 3; ++b)
     if (b != a && (fsi.lo[b] != 0 || fsi.hi[b] != layout.cells[b]))
       throw Error(who + "afdmp expected the FSI zone " + box_text(fsi) +
-                  " to span the domain along " + kAxisNames[b] + " (across its face normal to " +
-                  kAxisNames[a] + ")");
+                  " to span the domain along " + config::kAxisNames[b] +
+                  " (across its face normal to " + config::kAxisNames[a] + ")");
   if (!zone.activation_pressure)
     throw Error(who +
                 "afdmp needs zones.mpm.activation_pressure [Pa]: the FSI zone takes over "
@@ -82,7 +82,8 @@ void place_fsi_zone(const config::Scene& scene, AfdmpLayout& layout) {
   if (fluid_layers < std::max<std::int64_t>(kWatchLayers, 2))
     throw Error(who + "afdmp expected the fluid zone " + box_text(layout.fluid_cells) +
                 " to be >= " + std::to_string(std::max<std::int64_t>(kWatchLayers, 2)) +
-                " cells wide along " + kAxisNames[a] + ", got " + std::to_string(fluid_layers));
+                " cells wide along " + config::kAxisNames[a] + ", got " +
+                std::to_string(fluid_layers));
   layout.watch_cells = layout.face_side > 0 ? along(layout.all_cells, a, face - kWatchLayers, face)
                                             : along(layout.all_cells, a, face, face + kWatchLayers);
   layout.fsi_cells = fsi;

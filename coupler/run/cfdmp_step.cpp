@@ -174,6 +174,7 @@ void CfdmpStep<Dim>::build(const StepPlan& plan, cosim::Message& fdm, cosim::Mes
   // Before the removal: the particles it takes lie outside cell k-w+1 anyway, and its
   // uint32 arrays would leave these frames misaligned (a copy, so an allocation, per read);
   // in a scene with a solid this export's own material array does so (docs/coupler.md).
+  // The quantities setups() declares (coupled_run.cpp); a recorded run replays these names.
   if (any_solid_)
     add_export(mpm, "face_particles", {"mass", "position", "volume", "material"});
   else

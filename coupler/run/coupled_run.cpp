@@ -80,7 +80,7 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   if (outer_nodes)
     *mpm.add_regions() = make_region("outer_nodes", v1::REGION_KIND_NODES, layout.outer_nodes,
                                      {"mass", "momentum", "internal_force"});
-  // The quantities CfdmpStep asks face_particles for (its any_solid_).
+  // CfdmpStep::build exports the same names each step (any_solid_ = has_structure).
   if (config::has_structure(scene))
     *mpm.add_regions() = make_region("face_particles", v1::REGION_KIND_PARTICLES, layout.face_cells,
                                      {"mass", "position", "volume", "material"});

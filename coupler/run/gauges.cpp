@@ -50,8 +50,7 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
   // Where the MPM read each gauge (its nearest or followed particle), as mpm_solver run's
   // gauges.csv; the FDM reads the cell holding the gauge's point, which is recorded.
   for (const char* name : kPositionNames) mpm_.quantities.push_back(name);
-  position_column_ = structures ? kFluidQuantities + 1 : kFluidQuantities;
-  quantities_ = position_column_ + kPositionNames.size();
+  quantities_ = (structures ? kFluidQuantities + 1 : kFluidQuantities) + kPositionNames.size();
   fdm_all_ = fdm_;
   mpm_all_ = mpm_;
   following_ = mpm_;
@@ -160,7 +159,7 @@ void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
                                       : std::string("another result")));
   // What the part does not sample: the FDM's Mises stress is 0, its position the gauge's point.
   for (const std::size_t g : part.gauges) {
-    for (std::size_t q = part.quantities.size(); q < position_column_; ++q)
+    for (std::size_t q = part.quantities.size(); q < position_column(); ++q)
       sample_[quantities_ * g + q] = 0.0;
     if (part.quantities.size() < quantities_) record_fixed_position(g);
   }
@@ -171,9 +170,13 @@ void CoupledGauges::read_from(const Part& part, const cosim::Message& reply) {
   }
 }
 
+std::size_t CoupledGauges::position_column() const {
+  return quantities_ - kPositionNames.size();
+}
+
 void CoupledGauges::record_fixed_position(std::size_t g) {
   for (std::size_t a = 0; a < kPositionNames.size(); ++a)
-    sample_[quantities_ * g + position_column_ + a] = scene_.gauges[g].position[a];
+    sample_[quantities_ * g + position_column() + a] = scene_.gauges[g].position[a];
 }
 
 void CoupledGauges::mark_unsampled_following() {

@@ -84,6 +84,8 @@ class CoupledGauges {
   void mark_unsampled_following();
   /// Gauge g's own point as its position columns (a gauge the FDM or the 1D stage reads).
   void record_fixed_position(std::size_t g);
+  /// The first position column of a gauge.
+  [[nodiscard]] std::size_t position_column() const;
 
   const config::Scene& scene_;
   std::optional<io::GaugeRecorder> recorder_;
@@ -97,8 +99,7 @@ class CoupledGauges {
   bool started_ = false;
   double next_sample_ = 0;
   double pending_time_ = 0;
-  std::size_t quantities_ = 0;       ///< recorded per gauge: 8, or 9 with mises_stress
-  std::size_t position_column_ = 0;  ///< the first position column of a gauge
+  std::size_t quantities_ = 0;  ///< recorded per gauge: 8, or 9 with mises_stress
   /// gauge-major: density, pressure, velocity_x|y|z[, mises_stress], position_x|y|z
   std::vector<double> sample_;
 };

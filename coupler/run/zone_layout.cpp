@@ -81,8 +81,8 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
     if (b == a || (mpm.lo[b] == 0 && mpm.hi[b] == layout.cells[b] && fdm.lo[b] == 0 &&
                    fdm.hi[b] == layout.cells[b]))
       continue;
-    throw Error(who + "expected both zones to span the domain along " + kAxisNames[b] +
-                " (across the coupling face normal to " + kAxisNames[a] + "), got FDM " +
+    throw Error(who + "expected both zones to span the domain along " + config::kAxisNames[b] +
+                " (across the coupling face normal to " + config::kAxisNames[a] + "), got FDM " +
                 box_text(fdm) + " and MPM " + box_text(mpm));
   }
 
@@ -108,18 +108,18 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
   const std::int64_t overlap = layout.face_side > 0 ? fdm_end - face : face - fdm_end;
   if (overlap < layout.handshake_width || overlap < 1)
     throw Error(who + "expected the FDM zone to reach " + std::to_string(layout.handshake_width) +
-                " cells into the MPM zone along " + kAxisNames[a] + ", got " +
+                " cells into the MPM zone along " + config::kAxisNames[a] + ", got " +
                 std::to_string(overlap));
   if (layout.deposit_cells.lo[a] < fdm.lo[a] || layout.deposit_cells.hi[a] > fdm.hi[a])
     throw Error(who + "expected the FDM zone to hold " + std::to_string(kDepositLayers) +
-                " cells outside the MPM zone's face at " + kAxisNames[a] + " cell " +
+                " cells outside the MPM zone's face at " + config::kAxisNames[a] + " cell " +
                 std::to_string(face) + ", got FDM " + box_text(fdm));
   if (layout.ghost_cells.lo[a] < 0 || layout.ghost_cells.hi[a] > n ||
       layout.ghost_cells.lo[a] < mpm.lo[a] || layout.ghost_cells.hi[a] > mpm.hi[a])
     throw Error(who + "expected " + std::to_string(kFdmGhostLayers) +
                 " FDM ghost layers inside the MPM zone past the FDM zone's end at " +
-                kAxisNames[a] + " cell " + std::to_string(fdm_end) + ", got MPM " + box_text(mpm) +
-                " in a grid of " + std::to_string(n) + " cells");
+                config::kAxisNames[a] + " cell " + std::to_string(fdm_end) + ", got MPM " +
+                box_text(mpm) + " in a grid of " + std::to_string(n) + " cells");
   layout.ghost_nodes = nodes_of(layout.ghost_cells, layout.cells);
   layout.interface_nodes = along(nodes_of(whole, layout.cells), a, face, face + 1);
   const std::int64_t outer = face - layout.face_side;
