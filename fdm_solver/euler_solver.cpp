@@ -517,7 +517,8 @@ EulerState& EulerSolver::state_for_update(const ActiveBox& region) {
 }
 
 void EulerSolver::restore(const EulerState& state, double time, std::int64_t steps,
-                          const Totals& outflow, std::optional<TrackerState> tracker) {
+                          const Totals& outflow, const FaceOutflow& face_outflow,
+                          std::optional<TrackerState> tracker) {
   if (tracker_.has_value() != tracker.has_value())
     throw Error(std::string("fdm_solver: restore ") + (tracker ? "with" : "without") +
                 " tracer state into a solver of " + std::to_string(eos_.size()) + " materials");
@@ -527,6 +528,12 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
       state.mix_pinf.size() != state_.mix_pinf.size())
     throw Error("fdm_solver: restored state does not match the solver's grid of " +
                 std::to_string(state_.grid.cell_count()) + " cells");
+  for (std::size_t f = 0; f < face_outflow_.size(); ++f)
+    if (face_outflow[f].size() != face_outflow_[f].size())
+      throw Error(std::string("fdm_solver: restored outflow of face ") + config::kFaceNames[f] +
+                  " holds " + std::to_string(face_outflow[f].size()) + " values; its " +
+                  std::to_string(face_outflow_[f].size() / kVariables) + " boundary cells need " +
+                  std::to_string(face_outflow_[f].size()));
   if (tracker_) {
     tracker_->restore(std::move(*tracker));  // checks before it changes anything
     closure_ = closure_report(tracker_->states());
@@ -538,7 +545,7 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
   time_ = time;
   steps_ = steps;
   outflow_ = outflow;
-  for (auto& per_cell : face_outflow_) std::fill(per_cell.begin(), per_cell.end(), 0.0);
+  face_outflow_ = face_outflow;
   clear_watched_crossing();
   limit_after_step_.reset();
   // Exactness over speed: every cell is updated from here on (skip_quiet would

@@ -33,6 +33,8 @@ struct SolverOptions {
 
 /// Conserved totals over the domain: mass [kg], momentum x/y/z [kg m/s], energy [J].
 using Totals = std::array<double, kVariables>;
+/// Per domain face (config::Face order), per boundary cell: [cell * kVariables + v].
+using FaceOutflow = std::array<std::vector<double>, 6>;
 
 class EulerSolver {
  public:
@@ -73,15 +75,16 @@ class EulerSolver {
   [[nodiscard]] const ClosureReport& last_closure() const { return closure_; }
 
   /// Continues from a checkpoint: replaces the state, the clock (time,
-  /// steps), the accumulated boundary outflow (face_outflow() and the watched
-  /// crossing restart from zero) and, in a multi-material solver,
+  /// steps), the accumulated boundary outflow (its sums and each face's per
+  /// cell, as face_outflow(); the watched crossing restarts from zero) and, in
+  /// a multi-material solver,
   /// the tracker's state (which it must then be given; saved from tracker()).
   /// The disturbed box becomes the whole grid, since which cells are still is
   /// not part of a checkpoint: exactness over speed after a restore (a still
   /// cell is advanced to the same bits as a skipped one). `state` must be on
   /// this solver's grid. Throws mpfd::Error otherwise, before changing anything.
   void restore(const EulerState& state, double time, std::int64_t steps, const Totals& outflow,
-               std::optional<TrackerState> tracker = std::nullopt);
+               const FaceOutflow& face_outflow, std::optional<TrackerState> tracker = std::nullopt);
 
   /// Takes cells and tracers from outside (an AFDMP handoff, proto/README.md
   /// §15): the conserved fields of `cells` (on this solver's grid; its
@@ -106,11 +109,12 @@ class EulerSolver {
   /// impulse of walls included).
   [[nodiscard]] const Totals& outflow() const { return outflow_; }
   /// outflow() per boundary cell of domain face `face` (config::Face order;
-  /// cells numbered as in QuietFaceFlux), [cell * kVariables + v]. Since the
-  /// start or the last restore (a checkpoint keeps only the sums).
+  /// cells numbered as in QuietFaceFlux), [cell * kVariables + v], since the
+  /// start.
   [[nodiscard]] const std::vector<double>& face_outflow(int face) const {
     return face_outflow_[static_cast<std::size_t>(face)];
   }
+  [[nodiscard]] const FaceOutflow& face_outflow() const { return face_outflow_; }
 
   /// From now on counts what crosses the faces normal to `axis` between cells
   /// index - 1 and index (0 < index < cells along axis) toward +axis: a
@@ -167,8 +171,8 @@ class EulerSolver {
   std::vector<double> energy_, pressure_;        // scratch for the closure
   ClosureReport closure_;
   Totals outflow_{};
-  std::array<std::vector<double>, 6> face_outflow_;  // see face_outflow()
-  int watched_axis_ = -1, watched_index_ = 0;        // see watch_face()
+  FaceOutflow face_outflow_;                   // see face_outflow()
+  int watched_axis_ = -1, watched_index_ = 0;  // see watch_face()
   std::vector<double> watched_crossing_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;

@@ -9,9 +9,6 @@
 
 namespace mpfd::config {
 
-inline constexpr const char* kFaceNames[] = {"x_lower", "x_upper", "y_lower",
-                                             "y_upper", "z_lower", "z_upper"};
-
 // Computed values such as grid lines carry round-off; 12 digits hide it.
 inline std::string num(double x) {
   char buffer[32];

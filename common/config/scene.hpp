@@ -136,6 +136,9 @@ struct Charge {
 /// non_reflecting: MPM only, Lysmer-Kuhlemeyer viscous tractions (W §2.4); open to particles.
 enum class BoundaryKind { outflow, wall, symmetry, non_reflecting };
 enum class Face : std::size_t { x_lower, x_upper, y_lower, y_upper, z_lower, z_upper };
+/// The faces as the scene's `boundaries` keys name them, in Face order.
+inline constexpr const char* kFaceNames[] = {"x_lower", "x_upper", "y_lower",
+                                             "y_upper", "z_lower", "z_upper"};
 
 struct Boundaries {
   std::array<BoundaryKind, 6> faces{};  ///< indexed by Face; default outflow everywhere

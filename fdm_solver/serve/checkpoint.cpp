@@ -112,7 +112,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
           .warn("Restore: '", file.string(),
                 "' was written for another scene text than this Setup's; its grid and materials "
                 "match, so the state is restored");
-    zone.solver.restore(back.state, back.solver_time, back.steps, back.outflow,
+    zone.solver.restore(back.state, back.solver_time, back.steps, back.outflow, back.face_outflow,
                         std::move(back.tracker));  // checks before it changes anything
   } catch (const cosim::ProtocolError&) {
     throw;

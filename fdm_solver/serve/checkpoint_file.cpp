@@ -18,6 +18,11 @@ constexpr std::array<const char*, kVariables> kConserved = {
 constexpr std::array<const char*, kVariables> kConservedUnits = {
     "kg/m^3", "kg/(m^2 s)", "kg/(m^2 s)", "kg/(m^2 s)", "J/m^3"};
 
+/// The dataset of one face's outflow per boundary cell.
+std::string face_outflow_name(std::size_t face) {
+  return std::string("/audit/face_outflow/") + config::kFaceNames[face];
+}
+
 std::string cells_text(const std::array<double, 3>& n) {
   std::string text = "[";
   for (std::size_t a = 0; a < 3; ++a)
@@ -101,6 +106,13 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   h5.create_group("/audit");
   h5.write_dataset("/audit/outflow", solver.outflow(), {kVariables},
                    "kg, kg m/s, kg m/s, kg m/s, J");
+  h5.create_group("/audit/face_outflow");
+  for (std::size_t f = 0; f < 6; ++f) {
+    const std::vector<double>& per_cell = solver.face_outflow()[f];
+    if (per_cell.empty()) continue;  // the faces of an inactive axis
+    h5.write_dataset(face_outflow_name(f), per_cell, {per_cell.size() / kVariables, kVariables},
+                     "kg, kg m/s, kg m/s, kg m/s, J");
+  }
 }
 
 CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone,
@@ -112,7 +124,7 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   const grid::UniformGrid& grid = zone.solver.state().grid;
   const std::size_t count = grid.cell_count();
   const int materials = static_cast<int>(zone.scene.materials.size());
-  CheckpointContents back{EulerState(grid), 0.0, 0, {}, std::nullopt, {}};
+  CheckpointContents back{EulerState(grid), 0.0, 0, {}, {}, std::nullopt, {}};
   for (std::size_t v = 0; v < kVariables; ++v)
     back.state.u[v] = in.values(kConserved[v], count, "one per cell");
   const auto material =
@@ -130,6 +142,10 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   }
   const auto outflow = in.values("/audit/outflow", kVariables, "mass, momentum x/y/z, energy");
   std::copy(outflow.begin(), outflow.end(), back.outflow.begin());
+  for (std::size_t f = 0; f < 6; ++f)
+    if (const std::size_t values = zone.solver.face_outflow()[f].size(); values > 0)
+      back.face_outflow[f] =
+          in.values(face_outflow_name(f), values, "mass, momentum x/y/z, energy per boundary cell");
 
   const double steps = h5.read_attribute("/", "step");
   if (steps != static_cast<double>(step))

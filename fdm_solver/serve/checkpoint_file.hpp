@@ -1,6 +1,7 @@
 #pragma once
 // The contents of a checkpoint file, docs/output.md `checkpoint_NNNNNN.h5`:
-// everything the zone's next step reads (cells, clock, outflow audit and, in
+// everything the zone's next step reads (cells, clock, outflow audit per face
+// and boundary cell and, in
 // a multi-material zone, the tracker's state), written and read back checked
 // against the running zone.
 
@@ -16,7 +17,7 @@ namespace mpfd::fdm {
 
 /// The `format` attribute of a checkpoint and the version read back.
 inline constexpr const char* kCheckpointFormat = "mpfd-fdm-checkpoint";
-inline constexpr std::int64_t kCheckpointVersion = 2;
+inline constexpr std::int64_t kCheckpointVersion = 3;
 
 /// Writes the zone's whole restart state to `file` (created or overwritten).
 void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone);
@@ -27,6 +28,7 @@ struct CheckpointContents {
   double solver_time = 0.0;
   std::int64_t steps = 0;
   Totals outflow{};
+  FaceOutflow face_outflow;
   std::optional<TrackerState> tracker;
   std::string scene_text;
 };

@@ -1,10 +1,12 @@
 // Checkpoint and Restore of a two-material zone (TNT products and air, with
 // tracers): run A takes 12 steps, checkpoints, takes 8 more; run B restores
 // the checkpoint into a fresh zone and takes the same 8 steps. Every cell
-// field, tracer and per-material state must be bitwise the same.
+// field, tracer, per-material state and boundary outflow must be bitwise the
+// same.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -38,6 +40,10 @@ TEST(FdmCheckpointMultiMaterial,
   // e_r, rho_r) and cells without tracers (their filled classification).
   EXPECT_GT(a->solver.last_closure().mixed_cells, 0U);
   EXPECT_GT(empty_cells(*a->solver.tracker()), 0U);
+  // ... and the outflow per boundary cell that a region's outflow_* reports
+  // (the air's pressure impulse on the open faces from the first step on).
+  const auto& x_upper = at_twelve.face_outflow[static_cast<std::size_t>(config::Face::x_upper)];
+  EXPECT_TRUE(std::any_of(x_upper.begin(), x_upper.end(), [](double v) { return v != 0.0; }));
   const auto written = write_checkpoint(*a, {});
   const std::filesystem::path file = dir.path() / "checkpoints" / "checkpoint_000012.h5";
   ASSERT_EQ(written.path(), file.string());
@@ -76,6 +82,7 @@ TEST(FdmCheckpointMultiMaterial,
   EXPECT_EQ(resumed.theta, uninterrupted.theta);
   EXPECT_EQ(resumed.material_energy, uninterrupted.material_energy);
   EXPECT_EQ(resumed.cell_energy, uninterrupted.cell_energy);
+  EXPECT_EQ(resumed.face_outflow, uninterrupted.face_outflow);
   EXPECT_TRUE(resumed == uninterrupted);
 }
 

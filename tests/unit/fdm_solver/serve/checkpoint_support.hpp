@@ -99,6 +99,7 @@ struct SolverImage {
   double time = 0.0;
   std::int64_t steps = 0;
   std::array<double, kVariables> outflow{};
+  FaceOutflow face_outflow;
   std::array<std::vector<double>, 3> tracer_position;
   std::vector<int> tracer_material;
   std::vector<double> tracer_volume;
@@ -115,6 +116,7 @@ struct SolverImage {
         time(solver.time()),
         steps(solver.steps()),
         outflow(solver.outflow()),
+        face_outflow(solver.face_outflow()),
         mixed_cells(solver.last_closure().mixed_cells) {
     if (const MultiMaterialTracker* tracker = solver.tracker()) {
       tracer_position = tracker->tracers().position;
