@@ -519,13 +519,13 @@ EulerState& EulerSolver::state_for_update(const ActiveBox& region) {
 void EulerSolver::restore(const EulerState& state, double time, std::int64_t steps,
                           const Totals& outflow, const FaceOutflow& face_outflow,
                           std::optional<TrackerState> tracker) {
-  if (tracker_.has_value() != tracker.has_value())
-    throw Error(std::string("fdm_solver: restore ") + (tracker ? "with" : "without") +
-                " tracer state into a solver of " + std::to_string(eos_.size()) + " materials");
+  if (tracker_ && !tracker)
+    throw Error("fdm_solver: restore without tracer state into a solver of " +
+                std::to_string(eos_.size()) + " materials with tracers");
   check_grid_of(state, "restored");
-  if (state.material.size() != state_.material.size() ||
-      state.mix_gamma.size() != state_.mix_gamma.size() ||
-      state.mix_pinf.size() != state_.mix_pinf.size())
+  const std::size_t mixture_size = tracker ? state_.grid.cell_count() : 0;
+  if (state.material.size() != state_.material.size() || state.mix_gamma.size() != mixture_size ||
+      state.mix_pinf.size() != mixture_size)
     throw Error("fdm_solver: restored state does not match the solver's grid of " +
                 std::to_string(state_.grid.cell_count()) + " cells");
   for (std::size_t f = 0; f < face_outflow_.size(); ++f)
@@ -536,8 +536,11 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
                   std::to_string(face_outflow_[f].size()));
   if (tracker_) {
     tracker_->restore(std::move(*tracker));  // checks before it changes anything
-    closure_ = closure_report(tracker_->states());
+  } else if (tracker) {                      // tracers an import gave a zone of one material
+    tracker_.emplace(state_.grid, eos_, std::move(*tracker));  // checks, as restore
+    allocate_multi_material();
   }
+  if (tracker_) closure_ = closure_report(tracker_->states());
   state_.u = state.u;
   state_.material = state.material;
   state_.mix_gamma = state.mix_gamma;

@@ -76,9 +76,10 @@ class EulerSolver {
 
   /// Continues from a checkpoint: replaces the state, the clock (time,
   /// steps), the accumulated boundary outflow (its sums and each face's per
-  /// cell, as face_outflow(); the watched crossing restarts from zero) and, in
-  /// a multi-material solver,
-  /// the tracker's state (which it must then be given; saved from tracker()).
+  /// cell, as face_outflow(); the watched crossing restarts from zero) and the
+  /// tracker's state: a multi-material solver must be given one, and a solver
+  /// of one material given one becomes multi-material, as import_state made
+  /// the solver that saved it (saved from tracker()).
   /// The disturbed box becomes the whole grid, since which cells are still is
   /// not part of a checkpoint: exactness over speed after a restore (a still
   /// cell is advanced to the same bits as a skipped one). `state` must be on

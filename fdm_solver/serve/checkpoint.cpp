@@ -114,6 +114,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
                 "match, so the state is restored");
     zone.solver.restore(back.state, back.solver_time, back.steps, back.outflow, back.face_outflow,
                         std::move(back.tracker));  // checks before it changes anything
+    zone.start_time = back.start_time;
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {

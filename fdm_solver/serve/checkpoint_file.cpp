@@ -83,6 +83,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   h5.write_attribute("/", "format_version", kCheckpointVersion);
   h5.write_attribute("/", "time", zone.time());
   h5.write_attribute("/", "solver_time", solver.time());
+  h5.write_attribute("/", "setup_start_time", zone.setup_start_time);
   h5.write_attribute("/", "start_time", zone.start_time);
   h5.write_attribute("/", "step", solver.steps());
   h5.write_attribute("/", "scene", zone.scene_text);
@@ -124,7 +125,7 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   const grid::UniformGrid& grid = zone.solver.state().grid;
   const std::size_t count = grid.cell_count();
   const int materials = static_cast<int>(zone.scene.materials.size());
-  CheckpointContents back{EulerState(grid), 0.0, 0, {}, {}, std::nullopt, {}};
+  CheckpointContents back{EulerState(grid), 0.0, 0.0, 0, {}, {}, std::nullopt, {}};
   for (std::size_t v = 0; v < kVariables; ++v)
     back.state.u[v] = in.values(kConserved[v], count, "one per cell");
   const auto material =
@@ -132,13 +133,12 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
                  "a material index in [0, " + std::to_string(materials) + ") or " +
                      std::to_string(kMixedMaterial) + " (mixed)");
   std::copy(material.begin(), material.end(), back.state.material.begin());
-  if (zone.solver.tracker() != nullptr) {
+  // A zone that started with one material holds tracers once an import gave
+  // it some: the restore makes the running zone multi-material too.
+  if (zone.solver.tracker() != nullptr || h5.exists("/tracers")) {
     back.state.mix_gamma = in.values("/state/mix_gamma", count, "one per cell");
     back.state.mix_pinf = in.values("/state/mix_pinf", count, "one per cell");
     back.tracker = read_tracker_state(in, grid, materials);
-  } else if (h5.exists("/tracers") || h5.exists("/state/mix_gamma")) {
-    in.mismatch("holds multi-material state (tracers, mixed cells); the running scene '" +
-                zone.scene.name + "' has no tracers (all its cells start as one material)");
   }
   const auto outflow = in.values("/audit/outflow", kVariables, "mass, momentum x/y/z, energy");
   std::copy(outflow.begin(), outflow.end(), back.outflow.begin());
@@ -152,10 +152,11 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
     in.mismatch("was taken at step " + std::to_string(static_cast<long long>(steps)) +
                 "; the Restore request says step " + std::to_string(step));
   back.steps = static_cast<std::int64_t>(steps);
-  const double start_time = h5.read_attribute("/", "start_time");
-  if (start_time != zone.start_time)
-    in.mismatch("has start_time " + std::to_string(start_time) + " s; Setup gave " +
-                std::to_string(zone.start_time) + " s");
+  const double setup_start_time = h5.read_attribute("/", "setup_start_time");
+  if (setup_start_time != zone.setup_start_time)
+    in.mismatch("was taken in a zone set up with start_time " + std::to_string(setup_start_time) +
+                " s; Setup gave " + std::to_string(zone.setup_start_time) + " s");
+  back.start_time = h5.read_attribute("/", "start_time");
   back.solver_time = h5.read_attribute("/", "solver_time");
   back.scene_text = h5.read_string_attribute("/", "scene");
   return back;

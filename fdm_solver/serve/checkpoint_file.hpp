@@ -26,6 +26,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
 struct CheckpointContents {
   EulerState state;
   double solver_time = 0.0;
+  double start_time = 0.0;  ///< the zone's, which a commit may have moved from Setup's
   std::int64_t steps = 0;
   Totals outflow{};
   FaceOutflow face_outflow;
@@ -36,7 +37,7 @@ struct CheckpointContents {
 /// Reads `file` for `zone` at the Restore request's `step`. Throws a
 /// non-fatal cosim::ProtocolError{IO} naming the file and what mismatched (format,
 /// version, grid cells, material count or names, an array's size or values,
-/// step, start_time) and mpfd::Error if HDF5 cannot read it.
+/// step, Setup's start_time) and mpfd::Error if HDF5 cannot read it.
 [[nodiscard]] CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
                                                       const ServedZone& zone, std::uint64_t step);
 

@@ -63,6 +63,7 @@ ServedZone::ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup)
       output_dir(setup.output_dir()),
       solver(scene, SolverOptions::from_scene(scene)),
       output(setup.output_dir(), scene),
+      setup_start_time(setup.start_time()),
       start_time(setup.start_time()) {}
 
 const CellRegion& ServedZone::region(const std::string& name, std::string_view operation) const {

@@ -30,9 +30,12 @@ struct ServedZone {
   std::map<std::string, TracerRegion, std::less<>> tracer_regions;  ///< v1.2 TRACERS regions
   std::optional<cosim::FieldAssembly> pending_import;  ///< FieldChunks before their commit
   SnapshotOutput output;
+  double setup_start_time;  ///< Setup.start_time [s]
+  /// [s]: Setup's, or as a commit of imported fields sets the clock (proto
+  /// README §15 rule 4), or as a restored checkpoint had it.
   double start_time;
 
-  /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
+  /// The coupled time t^n [s]: start_time plus the time advanced since.
   [[nodiscard]] double time() const { return start_time + solver.time(); }
   /// The region called `name`; throws cosim::ProtocolError{UNKNOWN_REGION} listing the known ones.
   [[nodiscard]] const CellRegion& region(const std::string& name, std::string_view operation) const;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fdm_solver/serve/checkpoint.hpp"
 #include "field_transfer_support.hpp"
 
 namespace mpfd::fdm {
@@ -149,6 +150,38 @@ TEST(FdmFieldImport, Commit_SetsTheClockToSimTime) {
   // Advance accepts a time within kTimeTolerance (exchange.cpp).
   EXPECT_NEAR(target->time(), 2.5e-5, 1e-15 * 2.5e-5);
   EXPECT_EQ(target->solver.steps(), 3);  // the solver's own count carries on
+}
+
+TEST(FdmFieldImport, ACheckpointAfterAnImportRestoresIntoAFreshZoneAndContinuesBitwise) {
+  // The zone starts with air alone (no tracker); the import gives it tracers
+  // and moves its clock, which a fresh zone of the same Setup lacks.
+  const auto source = transfer_zone();
+  const auto target = transfer_zone(false);
+  advance_stable(*target, 3);
+  (void)stream_fields(*source, *target, "h1", kStateFields, 1 << 20);
+  (void)commit_import(*target, commit_request("h1", true, 2.5e-5));
+  advance_stable(*target, 4);
+  ASSERT_GT(target->solver.last_closure().mixed_cells, 0U);
+  const TempDir dir("after-import");
+  std::filesystem::create_directories(dir.path());
+  cosim::v1::Checkpoint checkpoint;
+  checkpoint.set_path(dir.path().string());
+  const auto written = write_checkpoint(*target, checkpoint);
+  const SolverImage at_checkpoint(target->solver);
+  const double time_at_checkpoint = target->time();
+  advance_stable(*target, 6);
+
+  const auto fresh = transfer_zone(false);
+  ASSERT_EQ(fresh->solver.tracker(), nullptr);
+  cosim::v1::Restore restore;
+  restore.set_path(written.path());
+  restore.set_step(7);
+  EXPECT_EQ(restore_checkpoint(*fresh, restore).time(), time_at_checkpoint);
+  ASSERT_NE(fresh->solver.tracker(), nullptr);
+  EXPECT_TRUE(SolverImage(fresh->solver) == at_checkpoint);
+  advance_stable(*fresh, 6);
+  EXPECT_TRUE(SolverImage(fresh->solver) == SolverImage(target->solver));
+  EXPECT_EQ(fresh->time(), target->time());
 }
 
 TEST(FdmFieldImport, Commit_WithoutE_IsMalformedAndLeavesStateUntouched) {
