@@ -108,7 +108,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   h5.write_dataset("/audit/outflow", solver.outflow(), {kVariables},
                    "kg, kg m/s, kg m/s, kg m/s, J");
   h5.create_group("/audit/face_outflow");
-  for (std::size_t f = 0; f < 6; ++f) {
+  for (std::size_t f = 0; f < solver.face_outflow().size(); ++f) {
     const std::vector<double>& per_cell = solver.face_outflow()[f];
     if (per_cell.empty()) continue;  // the faces of an inactive axis
     h5.write_dataset(face_outflow_name(f), per_cell, {per_cell.size() / kVariables, kVariables},
@@ -125,24 +125,29 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   const grid::UniformGrid& grid = zone.solver.state().grid;
   const std::size_t count = grid.cell_count();
   const int materials = static_cast<int>(zone.scene.materials.size());
-  CheckpointContents back{EulerState(grid), 0.0, 0.0, 0, {}, {}, std::nullopt, {}};
+  CheckpointContents back{.state = EulerState(grid)};
   for (std::size_t v = 0; v < kVariables; ++v)
     back.state.u[v] = in.values(kConserved[v], count, "one per cell");
-  const auto material =
-      in.indices("/state/material", count, "one per cell", materials, kMixedMaterial,
-                 "a material index in [0, " + std::to_string(materials) + ") or " +
-                     std::to_string(kMixedMaterial) + " (mixed)");
-  std::copy(material.begin(), material.end(), back.state.material.begin());
   // A zone that started with one material holds tracers once an import gave
-  // it some: the restore makes the running zone multi-material too.
-  if (zone.solver.tracker() != nullptr || h5.exists("/tracers")) {
+  // it some: the restore makes the running zone multi-material too. Only such
+  // a zone has mixed cells (and their EOS fit).
+  const bool multi_material = zone.solver.tracker() != nullptr || h5.exists("/tracers");
+  const std::string indices = "a material index in [0, " + std::to_string(materials) + ")";
+  const auto material =
+      multi_material
+          ? in.indices("/state/material", count, "one per cell", materials, kMixedMaterial,
+                       indices + " or " + std::to_string(kMixedMaterial) + " (mixed)")
+          : in.indices("/state/material", count, "one per cell", materials, std::nullopt,
+                       indices + " (no tracers, so no mixed cell)");
+  std::copy(material.begin(), material.end(), back.state.material.begin());
+  if (multi_material) {
     back.state.mix_gamma = in.values("/state/mix_gamma", count, "one per cell");
     back.state.mix_pinf = in.values("/state/mix_pinf", count, "one per cell");
     back.tracker = read_tracker_state(in, grid, materials);
   }
   const auto outflow = in.values("/audit/outflow", kVariables, "mass, momentum x/y/z, energy");
   std::copy(outflow.begin(), outflow.end(), back.outflow.begin());
-  for (std::size_t f = 0; f < 6; ++f)
+  for (std::size_t f = 0; f < back.face_outflow.size(); ++f)
     if (const std::size_t values = zone.solver.face_outflow()[f].size(); values > 0)
       back.face_outflow[f] =
           in.values(face_outflow_name(f), values, "mass, momentum x/y/z, energy per boundary cell");

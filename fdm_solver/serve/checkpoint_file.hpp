@@ -1,9 +1,8 @@
 #pragma once
 // The contents of a checkpoint file, docs/output.md `checkpoint_NNNNNN.h5`:
-// everything the zone's next step reads (cells, clock, outflow audit per face
-// and boundary cell and, in
-// a multi-material zone, the tracker's state), written and read back checked
-// against the running zone.
+// everything the zone's next step reads (cells, clock, the outflow audit per
+// face and boundary cell and, in a multi-material zone, the tracker's state),
+// written and read back checked against the running zone.
 
 #include <cstdint>
 #include <filesystem>
@@ -29,9 +28,9 @@ struct CheckpointContents {
   double start_time = 0.0;  ///< the zone's, which a commit may have moved from Setup's
   std::int64_t steps = 0;
   Totals outflow{};
-  FaceOutflow face_outflow;
-  std::optional<TrackerState> tracker;
-  std::string scene_text;
+  FaceOutflow face_outflow{};
+  std::optional<TrackerState> tracker{};
+  std::string scene_text{};
 };
 
 /// Reads `file` for `zone` at the Restore request's `step`. Throws a

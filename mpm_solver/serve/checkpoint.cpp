@@ -129,6 +129,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
       zone.next_step_map_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
+    zone.start_time = back.start_time;
     zone.dormant = false;
   } catch (const cosim::ProtocolError&) {
     throw;

@@ -56,6 +56,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   h5.write_attribute("/", "format_version", kCheckpointVersion);
   h5.write_attribute("/", "time", zone.time());
   h5.write_attribute("/", "solver_time", solver.time());
+  h5.write_attribute("/", "setup_start_time", zone.setup_start_time);
   h5.write_attribute("/", "start_time", zone.start_time);
   h5.write_attribute("/", "step", solver.steps());
   h5.write_attribute("/", "particle_updates", solver.particle_updates());
@@ -142,9 +143,11 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
     in.mismatch("was taken at step " + std::to_string(static_cast<long long>(steps)) +
                 "; the Restore request says step " + std::to_string(step));
   back.steps = static_cast<std::int64_t>(steps);
-  if (h5.read_attribute("/", "start_time") != zone.start_time)
-    in.mismatch("has start_time " + std::to_string(h5.read_attribute("/", "start_time")) +
-                " s; Setup gave " + std::to_string(zone.start_time) + " s");
+  const double setup_start_time = h5.read_attribute("/", "setup_start_time");
+  if (setup_start_time != zone.setup_start_time)
+    in.mismatch("was taken in a zone set up with start_time " + std::to_string(setup_start_time) +
+                " s; Setup gave " + std::to_string(zone.setup_start_time) + " s");
+  back.start_time = h5.read_attribute("/", "start_time");
   back.solver_time = h5.read_attribute("/", "solver_time");
   back.particle_updates = h5.read_attribute("/", "particle_updates");
   back.scene_text = h5.read_string_attribute("/", "scene");

@@ -17,7 +17,7 @@
 namespace mpfd::mpm {
 
 inline constexpr const char* kCheckpointFormat = "mpfd-mpm-checkpoint";
-inline constexpr std::int64_t kCheckpointVersion = 1;
+inline constexpr std::int64_t kCheckpointVersion = 2;
 
 /// Writes the zone's whole restart state to `file` (created or overwritten), with
 /// the box of its next-step map if it has one to keep (MpmSolver::next_step_map_for_checkpoint).
@@ -29,6 +29,8 @@ struct CheckpointContents {
   ParticleSet particles;
   std::vector<std::size_t> injected_body_materials;
   double solver_time = 0.0;
+  double start_time =
+      0.0;  ///< the zone's, which an Activate or a commit may have moved from Setup's
   std::int64_t steps = 0;
   BoundaryLedger ledger;
   double particle_updates = 0.0;
@@ -39,7 +41,7 @@ struct CheckpointContents {
 
 /// Reads `file` for `zone` at the Restore request's `step`. Throws a
 /// non-fatal cosim::ProtocolError{IO} naming the file and what mismatched (format,
-/// version, grid cells, materials, an array's size, step, start_time) and
+/// version, grid cells, materials, an array's size, step, Setup's start_time) and
 /// mpfd::Error if HDF5 cannot read it.
 [[nodiscard]] CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
                                                       const ServedZone& zone, std::uint64_t step);

@@ -48,6 +48,7 @@ ServedZone::ServedZone(config::Scene scene_in, const cosim::v1::Setup& setup)
       output_dir(setup.output_dir()),
       solver(scene, MpmSettings::from_scene(scene)),
       followed_gauges(scene.gauges, solver.particles(), binding_reach(solver.grid())),
+      setup_start_time(setup.start_time()),
       start_time(setup.start_time()),
       dormant(setup.zone().dormant()) {}
 

@@ -32,6 +32,9 @@ struct ServedZone {
   /// The scene's gauges with follow: material, bound at Setup to their particles (by id).
   FollowedGauges followed_gauges;
   std::map<std::string, ZoneRegion, std::less<>> regions;
+  double setup_start_time;  ///< Setup.start_time [s]
+  /// [s]: Setup's, or as an Activate of a dormant zone or a commit of imported
+  /// fields set the clock (proto §5, §15 rule 4), or as a restored checkpoint had it.
   double start_time;
   bool dormant;
   std::optional<io::SnapshotWriter> snapshots;  // made at the first WriteOutput
@@ -42,7 +45,7 @@ struct ServedZone {
   ParticleScratch particle_scratch;  ///< scratch of the PARTICLES exports and removals
   std::optional<cosim::FieldAssembly> field_import;  ///< the FieldChunks of an import (v1.2)
 
-  /// The coupled time t^n [s]: Setup's start_time plus the time advanced since.
+  /// The coupled time t^n [s]: start_time plus the time advanced since.
   [[nodiscard]] double time() const { return start_time + solver.time(); }
   /// The region called `name`; throws cosim::ProtocolError{UNKNOWN_REGION} listing the known ones.
   [[nodiscard]] const ZoneRegion& region(const std::string& name, std::string_view operation) const;

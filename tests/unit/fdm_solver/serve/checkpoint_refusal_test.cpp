@@ -125,6 +125,21 @@ TEST_F(FdmCheckpointRefusal, AFileWithoutItsDigestIsNotRead) {
   EXPECT_THAT(refusal(file), AllOf(HasSubstr(file.string()), HasSubstr("has no readable")));
 }
 
+TEST_F(FdmCheckpointRefusal, AZoneSetUpAtAnotherStartTimeIsNamedWithBoth) {
+  const fs::path folder = dir_.path() / "late";
+  auto message = setup(corner_charge_text(20, 20), {}, folder.string());
+  message.header.mutable_setup()->set_start_time(1e-3);
+  const auto late = set_up_zone(message.header.setup());
+  advance_stable(*late, 12);
+  fs::create_directories(folder);
+  cosim::v1::Checkpoint request;
+  request.set_path(folder.string());
+  const fs::path file = write_checkpoint(*late, request).path();
+  EXPECT_THAT(refusal(file),
+              AllOf(HasSubstr(file.string()),
+                    HasSubstr("set up with start_time 0.001000 s; Setup gave 0.000000 s")));
+}
+
 TEST_F(FdmCheckpointRefusal, AnotherStepIsNamedWithBoth) {
   EXPECT_THAT(refusal(good_, 13),
               AllOf(HasSubstr(good_.string()), HasSubstr("was taken at step 12"),

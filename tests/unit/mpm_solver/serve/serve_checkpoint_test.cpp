@@ -224,6 +224,37 @@ TEST_F(MpmServeRestart, ACheckpointAfterAnInjectionOntoTheMapContinuesBitForBit)
       [](ServedMpm& zone, Clock& clock) { run_exporting_ghost_nodes(zone, clock, 6); });
 }
 
+// A dormant zone woken at t = 2.5 ms starts its clock there (proto §5); a
+// checkpoint it takes later restores into a fresh dormant zone of the same
+// Setup, which then stands at the checkpoint's time, awake.
+TEST_F(MpmServeCheckpoint, AZoneWokenLaterRestoresItsClockIntoAFreshDormantZone) {
+  ServedMpm first;
+  first.request(setup(blast_text(), regions_with_all(), dir_.string(), true));
+  first.hub().set_clock(7, 2.5e-3);
+  cosim::Message wake;
+  wake.header.mutable_activate()->set_reason("test");
+  Clock clock{2.5e-3, first.request(std::move(wake)).header.activate_ack().stable_dt()};
+  run(first, clock, 5);
+  cosim::Message checkpoint;
+  checkpoint.header.mutable_checkpoint();
+  const auto written = first.request(std::move(checkpoint)).header.checkpoint_written();
+  const Clock at_checkpoint = clock;
+  run(first, clock, 5);
+  const auto expected = export_all(first);
+  first.shut_down();
+
+  ServedMpm second;
+  second.request(setup(blast_text(), regions_with_all(), dir_.string(), true));
+  cosim::Message restore;
+  restore.header.mutable_restore()->set_path(written.path());
+  restore.header.mutable_restore()->set_step(5);
+  EXPECT_EQ(second.request(std::move(restore)).header.restored().time(), at_checkpoint.time);
+  Clock again = at_checkpoint;
+  run(second, again, 5);
+  EXPECT_EQ(again.time, clock.time);
+  EXPECT_EQ(array_of(export_all(second), "all", "position"), array_of(expected, "all", "position"));
+}
+
 TEST_F(MpmServeCheckpoint, ACorruptedCheckpointIsRefusedAndTheStateKept) {
   ServedMpm served;
   Clock clock{0.0, served.request(setup(blast_text(), regions_with_all(), dir_.string()))
