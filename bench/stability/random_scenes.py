@@ -107,14 +107,16 @@ def generate(seed, steps):
     if method == "cfdmp":
         w = 5
         # The FDM zone ends w cells past the face and its 3 ghost layers must fit in the grid;
-        # a plate lies beyond them (the scene check's rule: structures live in the MPM zone).
+        # a plate lies beyond them and the next cell, whose particles reach the ghost cells'
+        # nodes (the scene check's rule: structures live in the MPM zone).
         face = min(round(rng.uniform(0.6, 0.85) * nx), nx - w - 3)
         if extra == "solid":
-            # At least 2 cells below the face (the strip and deposit layers); on the
-            # smallest grids the plate then moves right, beyond the ghost layers.
+            # At least 2 cells below the face (the strip and deposit layers); the plate
+            # then moves right where it must, on the smallest grids and by the cell
+            # the check added to the ghost layers (the face stays where it was drawn).
             face = max(2, min(face, math.floor(x0 / h + 1e-9) - w - 3))
             plate = bodies[1]["shape"]["box"]
-            shift = max(0.0, (face + w + 3) * h - plate["lower"][0])
+            shift = max(0.0, (face + w + 4) * h - plate["lower"][0])
             plate["lower"][0] += shift
             plate["upper"][0] += shift
         scene["zones"] = {"fdm": {"lower": [0, 0, 0], "upper": [(face + w) * h, upper[1], h]},

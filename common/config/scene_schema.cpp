@@ -64,8 +64,9 @@ std::shared_ptr<const Table<Zones>> zones_table() {
       make_table<Zones>("zones",
                         "Where each solver works when they are coupled in space (CFDMP, T §4.2). "
                         "Used only by solver.method cfdmp (both zones required; every body "
-                        "with a strength model in the mpm zone beyond the fdm zone and its 3 "
-                        "ghost layers) and afdmp (mpm zone only: the FSI zone, a slab across the "
+                        "with a strength model in the mpm zone beyond the fdm zone, its 3 "
+                        "ghost layers and one cell more, whose particles reach the ghost cells' "
+                        "nodes) and afdmp (mpm zone only: the FSI zone, a slab across the "
                         "domain with one face inside it, activation_pressure required, holding "
                         "every body with a strength model and no charge).");
   t->optional("fdm", &Zones::fdm, Nested<Zone>(fdm), "the FDM zone")

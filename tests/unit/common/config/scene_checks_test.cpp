@@ -222,40 +222,44 @@ std::string plate_from(double x) {
 
 const auto kRefusedStructure = [](const std::string& beyond) {
   return AllOf(HasSubstr("bodies[0].shape: expected a body with a strength model in zones.mpm "
-                         "beyond zones.fdm and its 3 ghost layers (" +
+                         "beyond zones.fdm, its 3 ghost layers and the cell whose particles "
+                         "reach their nodes (" +
                          beyond + " m), got 'plate' (material 'steel')"),
                HasSubstr("the FDM holds no solid"));
 };
 
 TEST(SceneChecks, A_structure_lies_in_the_mpm_zone_beyond_the_fdm_zone_and_its_ghost_layers) {
-  // V6: the FDM zone ends at x = 0.12 m, its 3 ghost layers at 0.126 m.
-  EXPECT_NO_THROW((void)parse_scene(with_steel_body(kV6Zones, plate_from(0.126)), "scene.yaml"));
-  for (const double x : {0.124, 0.112, -0.1})  // ghost layers, handshake, FDM only
+  // V6: the FDM zone ends at x = 0.12 m, its 3 ghost layers at 0.126 m, and
+  // the ghost cells' outer nodes (x = 0.126 m) gather the particles up to 0.128 m.
+  EXPECT_NO_THROW((void)parse_scene(with_steel_body(kV6Zones, plate_from(0.128)), "scene.yaml"));
+  // The node-sharing cell, the ghost layers, the handshake zone, the FDM alone.
+  for (const double x : {0.127, 0.124, 0.112, -0.1})
     EXPECT_THAT(errors_of(with_steel_body(kV6Zones, plate_from(x))),
-                ElementsAre(kRefusedStructure("x >= 0.126")))
+                ElementsAre(kRefusedStructure("x >= 0.128")))
         << "plate at x = " << x;
   const std::string fluid = with_steel_body(kV6Zones, plate_from(-0.1), false);
   EXPECT_NO_THROW((void)parse_scene(fluid, "scene.yaml"));
 }
 
 TEST(SceneChecks, A_structure_lies_beyond_the_ghost_layers_on_either_side_and_axis) {
-  // The MPM zone below the FDM's along x: ghost layers down to x = -0.136 m.
+  // The MPM zone below the FDM's along x: ghost layers and the node-sharing
+  // cell down to x = -0.138 m.
   const std::string below = R"(  fdm: {lower: [-0.13, 0, 0], upper: [0.16, 0.5, 0.002]}
   mpm: {lower: [-0.18, 0, 0], upper: [-0.12, 0.5, 0.002]}
 )";
-  EXPECT_NO_THROW((void)parse_scene(with_steel_body(below, plate_from(-0.15)), "scene.yaml"));
-  EXPECT_THAT(errors_of(with_steel_body(below, plate_from(-0.148))),
-              ElementsAre(kRefusedStructure("x <= -0.136")));
-  // Across y: the FDM zone up to y = 0.3 m, ghost layers to 0.306 m.
+  EXPECT_NO_THROW((void)parse_scene(with_steel_body(below, plate_from(-0.152)), "scene.yaml"));
+  EXPECT_THAT(errors_of(with_steel_body(below, plate_from(-0.15))),
+              ElementsAre(kRefusedStructure("x <= -0.138")));
+  // Across y: the FDM zone up to y = 0.3 m, ghost layers and that cell to 0.308 m.
   const std::string across_y = R"(  fdm: {lower: [-0.18, 0, 0], upper: [0.16, 0.3, 0.002]}
   mpm: {lower: [-0.18, 0.29, 0], upper: [0.16, 0.5, 0.002]}
 )";
   const auto slab_from = [](const std::string& y) {
     return "{lower: [-0.18, " + y + ", 0], upper: [0.16, 0.45, 0.002]}";
   };
-  EXPECT_NO_THROW((void)parse_scene(with_steel_body(across_y, slab_from("0.306")), "scene.yaml"));
-  EXPECT_THAT(errors_of(with_steel_body(across_y, slab_from("0.304"))),
-              ElementsAre(kRefusedStructure("y >= 0.306")));
+  EXPECT_NO_THROW((void)parse_scene(with_steel_body(across_y, slab_from("0.308")), "scene.yaml"));
+  EXPECT_THAT(errors_of(with_steel_body(across_y, slab_from("0.306"))),
+              ElementsAre(kRefusedStructure("y >= 0.308")));
 }
 
 TEST(SceneChecks, Zones_lie_inside_the_domain) {
