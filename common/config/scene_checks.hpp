@@ -16,7 +16,8 @@ void check_scene(const Scene& scene, Diagnostics& diagnostics);
 void check_spherical_geometry(const Scene& scene, Diagnostics& diagnostics);
 
 /// solver.method: cfdmp (scene_checks_cfdmp.cpp): every body with a strength
-/// model lies in the MPM zone beyond the FDM zone and its ghost layers.
+/// model lies in the MPM zone at least 4 cells past the FDM zone: its ghost
+/// layers and the cell whose particles reach the ghost cells' outer nodes.
 void check_cfdmp_structures(const Scene& scene, Diagnostics& diagnostics);
 
 /// solver.method: afdmp (scene_checks_afdmp.cpp): a charge, the FSI zone and

@@ -34,12 +34,13 @@ void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
     const Box box = bounding_box(s.bodies[i].shape);
     if (!overlap(s.domain, box, lower, upper)) continue;
     d.error(item("bodies", i) + ".shape",
-            "expected a body with a strength model in zones.mpm beyond zones.fdm, its " +
+            "expected a body with a strength model in zones.mpm at least " +
+                std::to_string(kFdmGhostLayers + 1) + " cells past zones.fdm (its " +
                 std::to_string(kFdmGhostLayers) +
-                " ghost layers and the cell whose particles reach their nodes (" + expected +
-                " m), got '" + s.bodies[i].name + "' (material '" + m->name + "') from " +
-                text(box.lower) + " to " + text(box.upper) + ", reaching into " + text(lower) +
-                " to " + text(upper) +
+                " ghost layers and the cell whose particles reach the ghost cells' outer nodes: " +
+                expected + " m), got '" + s.bodies[i].name + "' (material '" + m->name +
+                "') from " + text(box.lower) + " to " + text(box.upper) + ", reaching into " +
+                text(lower) + " to " + text(upper) +
                 ": the FDM holds no solid (its cells take the scene's initial material and the "
                 "MPM drops its particles outside zones.mpm), and a ghost cell filled from a "
                 "solid's nodes is no fluid (structures live in the MPM zone, T §4.2)");

@@ -222,8 +222,8 @@ std::string plate_from(double x) {
 
 const auto kRefusedStructure = [](const std::string& beyond) {
   return AllOf(HasSubstr("bodies[0].shape: expected a body with a strength model in zones.mpm "
-                         "beyond zones.fdm, its 3 ghost layers and the cell whose particles "
-                         "reach their nodes (" +
+                         "at least 4 cells past zones.fdm (its 3 ghost layers and the cell whose "
+                         "particles reach the ghost cells' outer nodes: " +
                          beyond + " m), got 'plate' (material 'steel')"),
                HasSubstr("the FDM holds no solid"));
 };
