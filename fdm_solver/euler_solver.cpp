@@ -523,11 +523,15 @@ void EulerSolver::restore(const EulerState& state, double time, std::int64_t ste
     throw Error("fdm_solver: restore without tracer state into a solver of " +
                 std::to_string(eos_.size()) + " materials with tracers");
   check_grid_of(state, "restored");
-  const std::size_t mixture_size = tracker ? state_.grid.cell_count() : 0;
-  if (state.material.size() != state_.material.size() || state.mix_gamma.size() != mixture_size ||
-      state.mix_pinf.size() != mixture_size)
+  if (state.material.size() != state_.material.size())
     throw Error("fdm_solver: restored state does not match the solver's grid of " +
                 std::to_string(state_.grid.cell_count()) + " cells");
+  const std::size_t mixture_size = tracker ? state_.grid.cell_count() : 0;
+  if (state.mix_gamma.size() != mixture_size || state.mix_pinf.size() != mixture_size)
+    throw Error("fdm_solver: restored mixed-cell fields hold " +
+                std::to_string(state.mix_gamma.size()) + " and " +
+                std::to_string(state.mix_pinf.size()) + " values; with" + (tracker ? "" : "out") +
+                " tracer state they need " + std::to_string(mixture_size));
   for (std::size_t f = 0; f < face_outflow_.size(); ++f)
     if (face_outflow[f].size() != face_outflow_[f].size())
       throw Error(std::string("fdm_solver: restored outflow of face ") + config::kFaceNames[f] +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "common/io/hdf5_file.hpp"
@@ -162,6 +163,9 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
     in.mismatch("was taken in a zone set up with start_time " + std::to_string(setup_start_time) +
                 " s; Setup gave " + std::to_string(zone.setup_start_time) + " s");
   back.start_time = h5.read_attribute("/", "start_time");
+  if (!std::isfinite(back.start_time))
+    in.mismatch("has start_time " + std::to_string(back.start_time) +
+                "; it becomes the zone's clock and must be finite");
   back.solver_time = h5.read_attribute("/", "solver_time");
   back.scene_text = h5.read_string_attribute("/", "scene");
   return back;

@@ -1,6 +1,7 @@
 #include "mpm_solver/serve/checkpoint_file.hpp"
 
 #include <array>
+#include <cmath>
 
 #include "common/io/hdf5_file.hpp"
 #include "cosim/serving/checkpoint_reader.hpp"
@@ -148,6 +149,9 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
     in.mismatch("was taken in a zone set up with start_time " + std::to_string(setup_start_time) +
                 " s; Setup gave " + std::to_string(zone.setup_start_time) + " s");
   back.start_time = h5.read_attribute("/", "start_time");
+  if (!std::isfinite(back.start_time))
+    in.mismatch("has start_time " + std::to_string(back.start_time) +
+                "; it becomes the zone's clock and must be finite");
   back.solver_time = h5.read_attribute("/", "solver_time");
   back.particle_updates = h5.read_attribute("/", "particle_updates");
   back.scene_text = h5.read_string_attribute("/", "scene");
