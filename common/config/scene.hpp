@@ -262,5 +262,9 @@ inline constexpr const char* kAxisNames[] = {"x", "y", "z"};
 /// Ghost layers the FDM reads beyond its zone in CFDMP: its sweep reads i-3 ... i+3
 /// (fdm_solver/pencil_io.hpp kGhost); the coupler fills them from the MPM's nodes.
 inline constexpr int kFdmGhostLayers = 3;
+/// Cells past the FDM zone whose particles reach the FDM in CFDMP: its ghost layers
+/// and the next cell, whose particles share the ghost cells' outer corner nodes (the
+/// coupler fills the ghost cells from nodes [e, e + 4)); structures stay beyond them.
+inline constexpr int kFdmReachCells = kFdmGhostLayers + 1;
 
 }  // namespace mpfd::config

@@ -10,21 +10,21 @@ void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
   if (!d.clean("zones") || !d.clean("bodies")) return;
   const Zone& fdm = *s.zones->fdm;
   // What the FDM holds: its zone and the ghost layers it fills from the MPM's
-  // nodes; the outer corner nodes of those layers also gather the particles of
-  // the next cell (linear and GIMP shapes alike), so a solid there would be
-  // filled into a ghost cell as fluid (random seed 38: +6.1 % energy).
+  // nodes, whose outer corner nodes also gather the particles of the next cell
+  // (linear and GIMP shapes alike): a solid there would be filled into a ghost
+  // cell as fluid (random seed 38: +6.1 % energy).
   Vec3 lower = fdm.lower, upper = fdm.upper;
   std::string expected;
   for (int i = 0; i < 3; ++i) {
     if (!active(s.domain, i)) continue;
-    const double ghosts = (kFdmGhostLayers + 1) * cell_size(s.domain, i);
+    const double reach = kFdmReachCells * cell_size(s.domain, i);
     const double tol = kGridTolerance * cell_size(s.domain, i);
     if (fdm.upper[i] < s.domain.upper[i] - tol) {
-      upper[i] += ghosts;
+      upper[i] += reach;
       expected = std::string(kAxisNames[i]) + " >= " + num(upper[i]);
     }
     if (fdm.lower[i] > s.domain.lower[i] + tol) {
-      lower[i] -= ghosts;
+      lower[i] -= reach;
       expected = std::string(kAxisNames[i]) + " <= " + num(lower[i]);
     }
   }
@@ -35,7 +35,7 @@ void check_cfdmp_structures(const Scene& s, Diagnostics& d) {
     if (!overlap(s.domain, box, lower, upper)) continue;
     d.error(item("bodies", i) + ".shape",
             "expected a body with a strength model in zones.mpm at least " +
-                std::to_string(kFdmGhostLayers + 1) + " cells past zones.fdm (its " +
+                std::to_string(kFdmReachCells) + " cells past zones.fdm (its " +
                 std::to_string(kFdmGhostLayers) +
                 " ghost layers and the cell whose particles reach the ghost cells' outer nodes: " +
                 expected + " m), got '" + s.bodies[i].name + "' (material '" + m->name +

@@ -34,7 +34,7 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   fdm.mutable_zone()->set_name("fdm");
   fdm.mutable_zone()->set_kind(v1::ZONE_KIND_EULER);
   *fdm.mutable_zone()->mutable_grid() = wire_grid(scene);
-  fdm.mutable_zone()->set_ghost_layers(static_cast<std::uint32_t>(kFdmGhostLayers));
+  fdm.mutable_zone()->set_ghost_layers(static_cast<std::uint32_t>(config::kFdmGhostLayers));
   fdm.set_scene_fragment(text);
   const auto cells = v1::REGION_KIND_CELLS;
   *fdm.add_regions() =

@@ -95,14 +95,14 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
     fdm_end = fdm.hi[a];
     layout.strip_cells = along(whole, a, face - 1, face + 1);
     layout.deposit_cells = along(whole, a, face - kDepositLayers, face);
-    layout.ghost_cells = along(whole, a, fdm_end, fdm_end + kFdmGhostLayers);
+    layout.ghost_cells = along(whole, a, fdm_end, fdm_end + config::kFdmGhostLayers);
     layout.fdm_owned = along(whole, a, fdm.lo[a], face);
   } else {
     face = mpm.hi[a];
     fdm_end = fdm.lo[a];
     layout.strip_cells = along(whole, a, face - 1, face + 1);
     layout.deposit_cells = along(whole, a, face, face + kDepositLayers);
-    layout.ghost_cells = along(whole, a, fdm_end - kFdmGhostLayers, fdm_end);
+    layout.ghost_cells = along(whole, a, fdm_end - config::kFdmGhostLayers, fdm_end);
     layout.fdm_owned = along(whole, a, face, fdm.hi[a]);
   }
   const std::int64_t overlap = layout.face_side > 0 ? fdm_end - face : face - fdm_end;
@@ -116,7 +116,7 @@ ZoneLayout make_zone_layout(const config::Scene& scene) {
                 std::to_string(face) + ", got FDM " + box_text(fdm));
   if (layout.ghost_cells.lo[a] < 0 || layout.ghost_cells.hi[a] > n ||
       layout.ghost_cells.lo[a] < mpm.lo[a] || layout.ghost_cells.hi[a] > mpm.hi[a])
-    throw Error(who + "expected " + std::to_string(kFdmGhostLayers) +
+    throw Error(who + "expected " + std::to_string(config::kFdmGhostLayers) +
                 " FDM ghost layers inside the MPM zone past the FDM zone's end at " +
                 config::kAxisNames[a] + " cell " + std::to_string(fdm_end) + ", got MPM " +
                 box_text(mpm) + " in a grid of " + std::to_string(n) + " cells");

@@ -32,8 +32,6 @@ inline WireBox along(WireBox box, int a, std::int64_t lo, std::int64_t hi) {
   return box;
 }
 
-/// FDM ghost layers the coupler sets each step (the scene check keeps structures out of them).
-inline constexpr std::int64_t kFdmGhostLayers = config::kFdmGhostLayers;
 /// Cell layers outside the MPM zone a crossing particle may land in (one
 /// cell per step under the CFL limit, one more for safety).
 inline constexpr std::int64_t kDepositLayers = 2;

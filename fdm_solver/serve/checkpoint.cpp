@@ -112,9 +112,10 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
           .warn("Restore: '", file.string(),
                 "' was written for another scene text than this Setup's; its grid and materials "
                 "match, so the state is restored");
-    zone.solver.restore(back.state, back.solver_time, back.steps, back.outflow, back.face_outflow,
+    zone.solver.restore(back.state, back.clock.solver_time, back.clock.steps, back.outflow,
+                        back.face_outflow,
                         std::move(back.tracker));  // checks before it changes anything
-    zone.start_time = back.start_time;
+    zone.start_time = back.clock.start_time;
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {

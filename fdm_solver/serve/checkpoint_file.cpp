@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <vector>
 
 #include "common/io/hdf5_file.hpp"
@@ -82,11 +81,8 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   io::Hdf5File h5(file, io::Hdf5File::Mode::create);
   h5.write_attribute("/", "format", std::string(kCheckpointFormat));
   h5.write_attribute("/", "format_version", kCheckpointVersion);
-  h5.write_attribute("/", "time", zone.time());
-  h5.write_attribute("/", "solver_time", solver.time());
-  h5.write_attribute("/", "setup_start_time", zone.setup_start_time);
-  h5.write_attribute("/", "start_time", zone.start_time);
-  h5.write_attribute("/", "step", solver.steps());
+  cosim::write_checkpoint_clock(
+      h5, {solver.steps(), solver.time(), zone.start_time, zone.setup_start_time});
   h5.write_attribute("/", "scene", zone.scene_text);
   h5.write_attribute("/", "material_count", static_cast<std::int64_t>(zone.scene.materials.size()));
   h5.write_attribute("/", "material_names", material_names(zone.scene));
@@ -153,20 +149,7 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
       back.face_outflow[f] =
           in.values(face_outflow_name(f), values, "mass, momentum x/y/z, energy per boundary cell");
 
-  const double steps = h5.read_attribute("/", "step");
-  if (steps != static_cast<double>(step))
-    in.mismatch("was taken at step " + std::to_string(static_cast<long long>(steps)) +
-                "; the Restore request says step " + std::to_string(step));
-  back.steps = static_cast<std::int64_t>(steps);
-  const double setup_start_time = h5.read_attribute("/", "setup_start_time");
-  if (setup_start_time != zone.setup_start_time)
-    in.mismatch("was taken in a zone set up with start_time " + std::to_string(setup_start_time) +
-                " s; Setup gave " + std::to_string(zone.setup_start_time) + " s");
-  back.start_time = h5.read_attribute("/", "start_time");
-  if (!std::isfinite(back.start_time))
-    in.mismatch("has start_time " + std::to_string(back.start_time) +
-                "; it becomes the zone's clock and must be finite");
-  back.solver_time = h5.read_attribute("/", "solver_time");
+  back.clock = cosim::read_checkpoint_clock(in, step, zone.setup_start_time);
   back.scene_text = h5.read_string_attribute("/", "scene");
   return back;
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cosim/serving/checkpoint_clock.hpp"
 #include "fdm_solver/euler_solver.hpp"
 #include "fdm_solver/serve/served_zone.hpp"
 
@@ -24,9 +25,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
 /// A checkpoint read back, checked to fit the zone: what EulerSolver::restore takes.
 struct CheckpointContents {
   EulerState state;
-  double solver_time = 0.0;
-  double start_time = 0.0;  ///< the zone's, which a commit may have moved from Setup's
-  std::int64_t steps = 0;
+  cosim::CheckpointClock clock{};
   Totals outflow{};
   FaceOutflow face_outflow{};
   std::optional<TrackerState> tracker{};

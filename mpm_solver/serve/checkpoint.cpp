@@ -118,8 +118,8 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
           .warn("Restore: '", file.string(),
                 "' was written for another scene text than this Setup's; its grid and materials "
                 "match, so the state is restored");
-    zone.solver.restore(std::move(back.particles), back.injected_body_materials, back.solver_time,
-                        back.steps, back.ledger,
+    zone.solver.restore(std::move(back.particles), back.injected_body_materials,
+                        back.clock.solver_time, back.clock.steps, back.ledger,
                         back.particle_updates);  // checks before it changes anything
     // The running zone adds its later injections to its map: so must this one.
     zone.next_step_map_seconds = 0.0;
@@ -129,7 +129,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
       zone.next_step_map_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    zone.start_time = back.start_time;
+    zone.start_time = back.clock.start_time;
     zone.dormant = false;
   } catch (const cosim::ProtocolError&) {
     throw;

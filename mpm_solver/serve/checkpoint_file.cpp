@@ -1,7 +1,6 @@
 #include "mpm_solver/serve/checkpoint_file.hpp"
 
 #include <array>
-#include <cmath>
 
 #include "common/io/hdf5_file.hpp"
 #include "cosim/serving/checkpoint_reader.hpp"
@@ -55,11 +54,8 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   io::Hdf5File h5(file, io::Hdf5File::Mode::create);
   h5.write_attribute("/", "format", std::string(kCheckpointFormat));
   h5.write_attribute("/", "format_version", kCheckpointVersion);
-  h5.write_attribute("/", "time", zone.time());
-  h5.write_attribute("/", "solver_time", solver.time());
-  h5.write_attribute("/", "setup_start_time", zone.setup_start_time);
-  h5.write_attribute("/", "start_time", zone.start_time);
-  h5.write_attribute("/", "step", solver.steps());
+  cosim::write_checkpoint_clock(
+      h5, {solver.steps(), solver.time(), zone.start_time, zone.setup_start_time});
   h5.write_attribute("/", "particle_updates", solver.particle_updates());
   h5.write_attribute("/", "scene", zone.scene_text);
   h5.write_attribute("/", "material_names", material_names(zone.scene));
@@ -139,20 +135,7 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   const auto audit = in.values("/ledger", 6, "mass, momentum x/y/z, energy, particles");
   back.ledger = {
       audit[0], {audit[1], audit[2], audit[3]}, audit[4], static_cast<std::int64_t>(audit[5])};
-  const double steps = h5.read_attribute("/", "step");
-  if (steps != static_cast<double>(step))
-    in.mismatch("was taken at step " + std::to_string(static_cast<long long>(steps)) +
-                "; the Restore request says step " + std::to_string(step));
-  back.steps = static_cast<std::int64_t>(steps);
-  const double setup_start_time = h5.read_attribute("/", "setup_start_time");
-  if (setup_start_time != zone.setup_start_time)
-    in.mismatch("was taken in a zone set up with start_time " + std::to_string(setup_start_time) +
-                " s; Setup gave " + std::to_string(zone.setup_start_time) + " s");
-  back.start_time = h5.read_attribute("/", "start_time");
-  if (!std::isfinite(back.start_time))
-    in.mismatch("has start_time " + std::to_string(back.start_time) +
-                "; it becomes the zone's clock and must be finite");
-  back.solver_time = h5.read_attribute("/", "solver_time");
+  back.clock = cosim::read_checkpoint_clock(in, step, zone.setup_start_time);
   back.particle_updates = h5.read_attribute("/", "particle_updates");
   back.scene_text = h5.read_string_attribute("/", "scene");
   if (h5.exists("/next_step_map_box")) {  // absent: no map, or a checkpoint from before maps

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cosim/serving/checkpoint_clock.hpp"
 #include "mpm_solver/serve/served_zone.hpp"
 
 namespace mpfd::mpm {
@@ -28,10 +29,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
 struct CheckpointContents {
   ParticleSet particles;
   std::vector<std::size_t> injected_body_materials;
-  double solver_time = 0.0;
-  double start_time =
-      0.0;  ///< the zone's, which an Activate or a commit may have moved from Setup's
-  std::int64_t steps = 0;
+  cosim::CheckpointClock clock;
   BoundaryLedger ledger;
   double particle_updates = 0.0;
   std::string scene_text;
