@@ -20,7 +20,13 @@ void write_csv_number(std::ofstream& csv, double x) {
 GaugeRecorder::GaugeRecorder(std::filesystem::path out_dir, std::vector<GaugePoint> gauges,
                              std::vector<GaugeQuantity> quantities)
     : out_dir_(std::move(out_dir)), gauges_(std::move(gauges)), quantities_(std::move(quantities)) {
+  open_csv();
+}
+
+void GaugeRecorder::open_csv() {
   const auto path = out_dir_ / "gauges.csv";
+  csv_.close();
+  csv_.clear();
   csv_.open(path, std::ios::trunc);
   if (!csv_) throw Error("cannot open " + path.string() + " for writing");
   csv_ << "time[s]";
@@ -41,12 +47,30 @@ void GaugeRecorder::record(double time, std::span<const double> values) {
                 std::to_string(gauges_.size() * quantities_.size()));
   times_.push_back(time);
   values_.insert(values_.end(), values.begin(), values.end());
+  write_csv_row(time, values);
+}
+
+void GaugeRecorder::write_csv_row(double time, std::span<const double> values) {
   write_csv_number(csv_, time);
   for (const double v : values) {
     csv_ << ',';
     write_csv_number(csv_, v);
   }
   csv_ << '\n';
+}
+
+void GaugeRecorder::resume(std::span<const double> times, std::span<const double> values) {
+  const std::size_t per_sample = gauges_.size() * quantities_.size();
+  if (values.size() != times.size() * per_sample)
+    throw Error("gauge histories to resume: " + std::to_string(values.size()) + " values for " +
+                std::to_string(times.size()) + " samples of " + std::to_string(gauges_.size()) +
+                " gauges x " + std::to_string(quantities_.size()) + " quantities; expected " +
+                std::to_string(times.size() * per_sample));
+  times_.assign(times.begin(), times.end());
+  values_.assign(values.begin(), values.end());
+  open_csv();
+  for (std::size_t s = 0; s < times_.size(); ++s)
+    write_csv_row(times_[s], std::span<const double>(values_).subspan(s * per_sample, per_sample));
 }
 
 void GaugeRecorder::flush() {

@@ -40,7 +40,19 @@ class GaugeRecorder {
   /// Pre-allocates room for `samples` samples so that record() does not allocate.
   void reserve(std::size_t samples);
 
+  /// Every sample so far: its time [s], and its values (sample-major, as record() took them).
+  [[nodiscard]] std::span<const double> times() const { return times_; }
+  [[nodiscard]] std::span<const double> values() const { return values_; }
+  /// Replaces the samples with `times` and `values` (those of an earlier recorder of the
+  /// same gauges) and rewrites gauges.csv with them: a restarted run goes on from its
+  /// checkpoint's histories, not from the rows the run wrote after it. Throws mpfd::Error
+  /// when the counts do not fit.
+  void resume(std::span<const double> times, std::span<const double> values);
+
  private:
+  void open_csv();
+  void write_csv_row(double time, std::span<const double> values);
+
   std::filesystem::path out_dir_;
   std::vector<GaugePoint> gauges_;
   std::vector<GaugeQuantity> quantities_;

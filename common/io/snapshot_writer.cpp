@@ -1,6 +1,7 @@
 #include "common/io/snapshot_writer.hpp"
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "common/core/error.hpp"
 #include "common/io/hdf5_file.hpp"
@@ -44,6 +45,26 @@ std::vector<XdmfStep> steps_of(const auto& entries, bool particles) {
         {e.file, e.time, particles ? e.particle_fields : e.cell_fields, e.particle_count});
   }
   return steps;
+}
+
+using FieldList = std::vector<std::pair<std::string, int>>;
+
+nlohmann::json fields_json(const FieldList& fields) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& [name, components] : fields) list.push_back({name, components});
+  return list;
+}
+
+FieldList fields_of(const nlohmann::json& list) {
+  FieldList fields;
+  for (const auto& field : list) {
+    const int components = field.at(1).get<int>();
+    if (components != 1 && components != 3)
+      throw Error("field '" + field.at(0).get<std::string>() + "' with " +
+                  std::to_string(components) + " components; expected 1 or 3");
+    fields.emplace_back(field.at(0).get<std::string>(), components);
+  }
+  return fields;
 }
 
 }  // namespace
@@ -101,6 +122,39 @@ std::filesystem::path SnapshotWriter::write(std::int64_t step, double time,
   entries_.push_back(std::move(entry));
   write_sidecars();
   return file;
+}
+
+std::string SnapshotWriter::history() const {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& e : entries_)
+    list.push_back({{"file", e.file},
+                    {"time", e.time},
+                    {"cell_fields", fields_json(e.cell_fields)},
+                    {"particle_fields", fields_json(e.particle_fields)},
+                    {"particle_count", e.particle_count}});
+  return list.dump();
+}
+
+void SnapshotWriter::resume(const std::string& history) {
+  std::vector<Entry> entries;
+  try {
+    const nlohmann::json list = nlohmann::json::parse(history);
+    if (!list.is_array()) throw Error("not a list");
+    for (const auto& e : list) {
+      char name[40];
+      std::snprintf(name, sizeof name, "snapshots/snapshot_%06zu.h5", entries.size());
+      if (e.at("file").get<std::string>() != name)
+        throw Error("entry " + std::to_string(entries.size()) + " names '" +
+                    e.at("file").get<std::string>() + "', expected '" + name + "'");
+      entries.push_back({name, e.at("time").get<double>(), fields_of(e.at("cell_fields")),
+                         fields_of(e.at("particle_fields")),
+                         e.at("particle_count").get<std::size_t>()});
+    }
+  } catch (const std::exception& error) {
+    throw Error("snapshot series to resume: " + std::string(error.what()));
+  }
+  entries_ = std::move(entries);
+  if (!entries_.empty()) write_sidecars();
 }
 
 void SnapshotWriter::write_sidecars() const {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/grid/uniform_grid.hpp"
@@ -27,6 +28,14 @@ class SnapshotWriter {
                               const std::vector<FieldView>& particles = {});
 
   [[nodiscard]] int index() const { return static_cast<int>(entries_.size()); }
+
+  /// The series written so far, as text (JSON) that a restart state keeps.
+  [[nodiscard]] std::string history() const;
+  /// Continues the series `history` (history() of an earlier writer over the same
+  /// folder): the next write() is snapshot number N, and the sidecars list the N
+  /// before it. A restart must not number its snapshots from 0 over the earlier
+  /// ones. Throws mpfd::Error naming what is malformed.
+  void resume(const std::string& history);
 
  private:
   struct Entry {

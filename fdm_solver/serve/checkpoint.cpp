@@ -84,6 +84,7 @@ cosim::v1::CheckpointWritten write_checkpoint(const ServedZone& zone,
       write_checkpoint_file(partial, zone);  // closed on return: then complete
       written.set_bytes(static_cast<std::uint64_t>(fs::file_size(partial)));
       written.set_sha256(cosim::sha256_hex_of_file(partial));
+      written.set_step(static_cast<std::uint64_t>(zone.solver.steps()));
       write_sidecar(partial_sidecar, written.sha256(), file);
       fs::rename(partial_sidecar, sidecar);
       fs::rename(partial, file);  // last: a checkpoint in place is complete
@@ -116,6 +117,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
                         back.face_outflow,
                         std::move(back.tracker));  // checks before it changes anything
     zone.start_time = back.clock.start_time;
+    zone.output.resume(back.snapshot_history, zone.solver.state().grid);
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {

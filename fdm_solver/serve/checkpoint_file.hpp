@@ -1,7 +1,8 @@
 #pragma once
 // The contents of a checkpoint file, docs/output.md `checkpoint_NNNNNN.h5`:
 // everything the zone's next step reads (cells, clock, the outflow audit per
-// face and boundary cell and, in a multi-material zone, the tracker's state),
+// face and boundary cell, the snapshot series written so far and, in a
+// multi-material zone, the tracker's state),
 // written and read back checked against the running zone.
 
 #include <cstdint>
@@ -17,7 +18,7 @@ namespace mpfd::fdm {
 
 /// The `format` attribute of a checkpoint and the version read back.
 inline constexpr const char* kCheckpointFormat = "mpfd-fdm-checkpoint";
-inline constexpr std::int64_t kCheckpointVersion = 3;
+inline constexpr std::int64_t kCheckpointVersion = 4;
 
 /// Writes the zone's whole restart state to `file` (created or overwritten).
 void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& zone);
@@ -30,6 +31,7 @@ struct CheckpointContents {
   FaceOutflow face_outflow{};
   std::optional<TrackerState> tracker{};
   std::string scene_text{};
+  std::string snapshot_history{};  ///< the snapshots written before it (SnapshotOutput::history)
 };
 
 /// Reads `file` for `zone` at the Restore request's `step`. Throws a

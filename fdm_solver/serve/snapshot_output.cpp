@@ -69,4 +69,20 @@ cosim::v1::OutputWritten SnapshotOutput::write(const EulerSolver& solver, double
   return written;
 }
 
+std::string SnapshotOutput::history() const {
+  return writer_ ? writer_->history() : "[]";
+}
+
+void SnapshotOutput::resume(const std::string& history, const grid::UniformGrid& grid) {
+  if (out_dir_.empty() || (history == "[]" && !writer_)) return;
+  try {
+    if (!writer_) writer_.emplace(out_dir_, grid);
+    writer_->resume(history);
+  } catch (const std::exception& error) {
+    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, "Restore: the snapshot series into '" +
+                                                             out_dir_.string() +
+                                                             "' cannot go on: " + error.what());
+  }
+}
+
 }  // namespace mpfd::fdm

@@ -32,6 +32,13 @@ class SnapshotOutput {
   cosim::v1::OutputWritten write(const EulerSolver& solver, double time,
                                  const cosim::v1::WriteOutput& request);
 
+  /// The series written so far (io::SnapshotWriter::history), "[]" before the first.
+  [[nodiscard]] std::string history() const;
+  /// Continues a checkpoint's series `history` in out_dir (io::SnapshotWriter::resume), so
+  /// that a restored run numbers its snapshots on (from 0 again for a checkpoint taken
+  /// before the first). Nothing without an out_dir. Throws cosim::ProtocolError{IO}.
+  void resume(const std::string& history, const grid::UniformGrid& grid);
+
  private:
   std::filesystem::path out_dir_;
   config::Scene scene_;

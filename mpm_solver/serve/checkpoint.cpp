@@ -90,6 +90,7 @@ cosim::v1::CheckpointWritten write_checkpoint(ServedZone& zone,
       write_checkpoint_file(partial, zone, zone.solver.next_step_map_for_checkpoint());
       written.set_bytes(static_cast<std::uint64_t>(fs::file_size(partial)));
       written.set_sha256(cosim::sha256_hex_of_file(partial));
+      written.set_step(static_cast<std::uint64_t>(zone.solver.steps()));
       write_sidecar(partial_sidecar, written.sha256(), file);
       fs::rename(partial_sidecar, sidecar);
       fs::rename(partial, file);  // last: a checkpoint in place is complete
@@ -131,6 +132,14 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     }
     zone.start_time = back.clock.start_time;
     zone.dormant = false;
+    // The restored run numbers its snapshots on (from 0 again for a checkpoint before the first).
+    if (!zone.output_dir.empty() && (zone.snapshots || back.snapshot_history != "[]")) {
+      if (!zone.snapshots) {
+        std::filesystem::create_directories(zone.output_dir);
+        zone.snapshots.emplace(zone.output_dir, zone.solver.grid());
+      }
+      zone.snapshots->resume(back.snapshot_history);
+    }
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {

@@ -1,9 +1,10 @@
 #pragma once
 // The contents of an MPM checkpoint file: every ParticleSet array (doubles in
 // ParticleSet::for_each_double_array order, ids split in two exact halves),
-// the materials of the injected bodies, clock, step, ledger and the scene
-// text, and the box of a next-step map (MpmSolver::map_next_step), written
-// and read back checked against the running zone.
+// the materials of the injected bodies, clock, step, ledger, the scene text,
+// the snapshot series written so far, and the box of a next-step map
+// (MpmSolver::map_next_step), written and read back checked against the
+// running zone.
 
 #include <array>
 #include <cstdint>
@@ -18,7 +19,7 @@
 namespace mpfd::mpm {
 
 inline constexpr const char* kCheckpointFormat = "mpfd-mpm-checkpoint";
-inline constexpr std::int64_t kCheckpointVersion = 2;
+inline constexpr std::int64_t kCheckpointVersion = 3;
 
 /// Writes the zone's whole restart state to `file` (created or overwritten), with
 /// the box of its next-step map if it has one to keep (MpmSolver::next_step_map_for_checkpoint).
@@ -33,6 +34,7 @@ struct CheckpointContents {
   BoundaryLedger ledger;
   double particle_updates = 0.0;
   std::string scene_text;
+  std::string snapshot_history;  ///< the snapshots written before it (io::SnapshotWriter::history)
   /// The node box the zone had mapped its next step for (MpmSolver::map_next_step), if any.
   std::optional<std::array<grid::Index3, 2>> next_step_map_box;
 };

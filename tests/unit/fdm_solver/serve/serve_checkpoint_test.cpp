@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "checkpoint_support.hpp"
 #include "cosim/serving/sha256.hpp"
@@ -29,6 +31,13 @@ double advance(ServedFdm& fdm, double time, int steps) {
     time += kDt;
   }
   return time;
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 /// rho, momentum and E of region "tube", one after the other.
@@ -66,6 +75,7 @@ TEST(FdmServeCheckpoint,
   EXPECT_EQ(written.path(), file.string());
   EXPECT_EQ(written.bytes(), std::filesystem::file_size(file));
   EXPECT_EQ(written.sha256(), cosim::sha256_hex_of_file(file));
+  EXPECT_EQ(written.step(), 10U);  // what Restore must name
   const double t20 = advance(first, t10, 10);
   const auto uninterrupted = exported_state(first);
 
@@ -81,6 +91,35 @@ TEST(FdmServeCheckpoint,
   EXPECT_EQ(resumed, uninterrupted);
   second.shut_down();
   EXPECT_EQ(second.last_shutdown().steps_done(), 20U);
+}
+
+TEST(FdmServeCheckpoint, ARestoredZoneNumbersItsSnapshotsOnAndListsTheEarlierOnes) {
+  const TempDir dir("series");
+  const std::string scene = sod_text(20);
+  const auto write_output = [](ServedFdm& fdm) {
+    cosim::Message message;
+    message.header.mutable_write_output();
+    return fdm.request(std::move(message)).header.output_written().files(0);
+  };
+  ServedFdm first;
+  first.request(setup(scene, {}, dir.path().string()));
+  write_output(first);
+  const double t1 = advance(first, 0.0, 1);
+  write_output(first);
+  const std::string file = first.request(checkpoint_to("")).header.checkpoint_written().path();
+  advance(first, t1, 1);
+  const std::string third = write_output(first);
+  const std::string series = read_text(dir.path() / "cells.xmf");
+  first.shut_down();
+
+  // A zone restored in the same folder writes the third snapshot again, not the first.
+  ServedFdm second;
+  second.request(setup(scene, {}, dir.path().string()));
+  second.request(restore_from(file, 1));
+  advance(second, t1, 1);
+  EXPECT_EQ(write_output(second), third);
+  EXPECT_THAT(third, HasSubstr("snapshot_000002.h5"));
+  EXPECT_EQ(read_text(dir.path() / "cells.xmf"), series);  // all three, with their times
 }
 
 TEST(FdmServeCheckpoint, RestoreOfAFileFromAnotherGridNamesTheFileAndBothCellCounts) {

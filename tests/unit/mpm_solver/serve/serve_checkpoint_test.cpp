@@ -132,6 +132,7 @@ TEST_F(MpmServeCheckpoint, ARestoredZoneContinuesBitForBit) {
   checkpoint.header.mutable_checkpoint();
   const auto written = first.request(std::move(checkpoint)).header.checkpoint_written();
   EXPECT_THAT(written.path(), HasSubstr("checkpoint_000015.h5"));
+  EXPECT_EQ(written.step(), 15U);  // what Restore must name
   EXPECT_TRUE(std::filesystem::is_regular_file(written.path() + ".sha256"));
   const Clock at_checkpoint = clock;
   run(first, clock, 10);
