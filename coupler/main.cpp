@@ -26,6 +26,14 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_dir, "output folder (summary.json, fdm/, mpm/)")->required();
   run->add_flag("--overwrite", launch.overwrite, "reuse a folder that holds an earlier run");
   run->add_option("--record", record, "record every message to FILE (.mpfdrec, proto §10)");
+  int checkpoint_every = 0;
+  run->add_option("--checkpoint-every", checkpoint_every,
+                  "cfdmp: checkpoint both solvers and the coupler after every K-th output "
+                  "(<out>/checkpoints, fdm/checkpoints, mpm/checkpoints); 0: none")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  run->add_flag("--restart", launch.restart,
+                "cfdmp: go on with the run in --out from its newest checkpoint (same scene file)");
   run->add_flag("--processes", processes, "start the solvers as child processes (over ipc)");
   run->add_option("--endpoints", endpoints,
                   "fdm=URL,mpm=URL: bind these (with --processes the children connect to them; "
@@ -92,6 +100,7 @@ int main(int argc, char** argv) {
     launch.mpm_program = mpm_program;
     mpfd::coupler::CoupledRunOptions options;
     options.out_dir = out_dir;
+    options.checkpoint_every = checkpoint_every;
     if (!record.empty()) options.record = record;
     options.max_chunk_bytes = static_cast<std::uint64_t>(chunk_mib * 1024 * 1024);
     options.handoff_timeout = std::chrono::milliseconds(std::llround(handoff_timeout * 1e3));

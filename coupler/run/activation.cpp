@@ -1,9 +1,21 @@
 #include "coupler/run/activation.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace mpfd::coupler {
+namespace {
+
+constexpr const char* kOwner = "activation";
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  ///< an empty optional
+
+std::optional<double> optional_of(double value) {
+  return std::isnan(value) ? std::nullopt : std::optional<double>(value);
+}
+
+}  // namespace
 
 ActivationWatch::ActivationWatch(std::optional<double> threshold)
     : threshold_(threshold), dormant_(threshold.has_value()) {}
@@ -48,6 +60,27 @@ std::string ActivationWatch::activation_text() const {
        << activation_step_ << "): strip pressure " << trigger_pressure_ << " Pa > threshold "
        << threshold_.value_or(0.0) << " Pa";
   return text.str();
+}
+
+void ActivationWatch::save(RestartWriter& out) const {
+  out.number(kOwner, "dormant", dormant_ ? 1 : 0);
+  out.number(kOwner, "trigger_time", trigger_time_.value_or(kNone));
+  out.number(kOwner, "trigger_pressure", trigger_pressure_);
+  out.number(kOwner, "peak_pressure", peak_pressure_);
+  out.number(kOwner, "activation_time", activation_time_.value_or(kNone));
+  out.number(kOwner, "activation_step", static_cast<double>(activation_step_));
+}
+
+void ActivationWatch::restore(const RestartReader& in) {
+  const bool dormant = in.number(kOwner, "dormant") != 0;
+  if (dormant && !threshold_)
+    in.refuse("holds a sleeping MPM zone; this scene has no zones.mpm.activation_pressure");
+  dormant_ = dormant;
+  trigger_time_ = optional_of(in.number(kOwner, "trigger_time"));
+  trigger_pressure_ = in.number(kOwner, "trigger_pressure");
+  peak_pressure_ = in.number(kOwner, "peak_pressure");
+  activation_time_ = optional_of(in.number(kOwner, "activation_time"));
+  activation_step_ = static_cast<std::int64_t>(in.number(kOwner, "activation_step"));
 }
 
 }  // namespace mpfd::coupler

@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "coupler/run/restart_file.hpp"
+
 namespace mpfd::coupler {
 
 class ActivationWatch {
@@ -48,6 +50,10 @@ class ActivationWatch {
   [[nodiscard]] nlohmann::json summary() const;
   /// The one log line of the switch.
   [[nodiscard]] std::string activation_text() const;
+
+  /// Its state in a coupled checkpoint (restart_file.hpp), and back.
+  void save(RestartWriter& out) const;
+  void restore(const RestartReader& in);
 
  private:
   std::optional<double> threshold_;

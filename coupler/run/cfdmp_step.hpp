@@ -34,6 +34,7 @@
 #include "coupler/handshake/strip_layout.hpp"
 #include "coupler/run/face_drain.hpp"
 #include "coupler/run/injected_material.hpp"
+#include "coupler/run/restart_file.hpp"
 #include "coupler/run/zone_layout.hpp"
 
 namespace mpfd::coupler {
@@ -108,6 +109,14 @@ class CfdmpStep {
   [[nodiscard]] std::string face_drain_text() const;
   /// The largest share of a face cell's mass any deposit of the run took.
   [[nodiscard]] double max_face_drain_share() const { return drain_.run_max_share(); }
+
+  /// What the coupler carries between steps, in a coupled checkpoint taken after an
+  /// output's exchange (restart_file.hpp): the face parcels, the injection rule and ids,
+  /// the ghost nodes of t^n, the dormant zone's outflow and the drain watch. The rest
+  /// (strip cells, face mass, proposals, audit totals) comes back with the exchange
+  /// without advance that a restarted run makes first.
+  void save(RestartWriter& out) const;
+  void restore(const RestartReader& in);
 
  private:
   using Vec = handshake::Vec<Dim>;

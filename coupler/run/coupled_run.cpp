@@ -10,10 +10,12 @@
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
+#include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "coupler/run/activation.hpp"
 #include "coupler/run/cfdmp_step.hpp"
 #include "coupler/run/gauges.hpp"
+#include "coupler/run/restart_file.hpp"
 #include "coupler/run/session.hpp"
 #include "coupler/run/wire.hpp"
 
@@ -97,6 +99,29 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   return messages;
 }
 
+/// Restore of each solver's checkpoint of `from` (a zone asleep then has none: its
+/// Setup state is the one it had).
+void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,
+                     std::chrono::milliseconds timeout) {
+  for (const auto& [peer, file] : {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}}) {
+    if (!file) continue;
+    cosim::Message message;
+    message.header.mutable_restore()->set_path(file->path);
+    message.header.mutable_restore()->set_step(file->step);
+    hub.send(peer, std::move(message));
+    const auto reply = hub.receive_from(peer, timeout);
+    if (!reply.header.has_restored())
+      throw Error("solver '" + std::string(peer) + "' answered Restore with '" +
+                  std::string(cosim::body_name(reply.header)) + "'");
+    if (reply.header.restored().step() != file->step)
+      throw Error("solver '" + std::string(peer) + "' restored '" + file->path + "' at step " +
+                  std::to_string(reply.header.restored().step()) + "; the coupler checkpoint '" +
+                  from.file.string() + "' names step " + std::to_string(file->step));
+    Logger("coupler").info("solver '", peer, "' restored '", file->path, "' (step ", file->step,
+                           ", t = ", reply.header.restored().time(), " s)");
+  }
+}
+
 Totals sum(std::initializer_list<Totals> parts) {
   Totals t;
   for (const Totals& part : parts) {
@@ -126,27 +151,29 @@ nlohmann::json totals_json(const Totals& t) {
 template <int Dim>
 class Loop {
  public:
-  Loop(const config::Scene& scene, const ZoneLayout& layout, const SolverFeatures& features,
-       cosim::Hub& hub, io::RunSummary& summary, const CoupledRunOptions& options)
+  Loop(const config::Scene& scene, const std::string& scene_text, const ZoneLayout& layout,
+       const SolverFeatures& features, cosim::Hub& hub, io::RunSummary& summary,
+       const CoupledRunOptions& options)
       : scene_(scene),
+        scene_text_(scene_text),
         step_(scene, layout, features),
         watch_(scene.zones->mpm->activation_pressure),
         gauges_(scene, options.out_dir),
         hub_(hub),
         summary_(summary),
-        options_(options) {}
+        options_(options) {
+    checkpoints_["every_outputs"] = options.checkpoint_every;
+  }
 
   CoupledRunReport run() {
     const auto start = Clock::now();
-    exchange({.advance = false, .audit = true});
-    initial_ = current();
-    if (watch_.due()) activate(0, 0);
-    write_output(0);
+    const Position at = options_.restart ? resume(*options_.restart) : begin();
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
     const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
-    int outputs = 1;
-    double t = 0;
-    std::int64_t n = 0;
+    int outputs = at.outputs;
+    double t = at.time;
+    std::int64_t n = at.step;
+    const auto wall = [&] { return earlier_wall_seconds_ + seconds_since(start); };
     while (t < scene_.time.end * (1 - 1e-12)) {
       if (n >= scene_.time.max_steps)
         throw Error("scene '" + scene_.name +
@@ -176,12 +203,17 @@ class Loop {
         hub_.set_clock(static_cast<std::uint64_t>(n), t);
         exchange({.advance = false, .time = t, .audit = true});
         write_output(outputs++);
-        record_summary("running", seconds_since(start));
+        record_summary("running", wall());
+        const int every = options_.checkpoint_every;
+        if (every > 0 && (outputs - 1) % every == 0 && t < scene_.time.end * (1 - 1e-12)) {
+          checkpoint({.step = n, .time = t, .outputs = outputs}, wall());
+          record_summary("running", wall());
+        }
       }
       progress.update(n, t);
     }
     progress.finish(n, t);
-    report_.wall_seconds = seconds_since(start);
+    report_.wall_seconds = wall();
     record_summary("completed", report_.wall_seconds);
     return report_;
   }
@@ -226,6 +258,7 @@ class Loop {
                                    {"mpm_advance_seconds", report_.mpm_advance_seconds},
                                    {"slower_advance_seconds", report_.max_advance_seconds},
                                    {"coupling_overhead_share", overhead}});
+    summary_.set_detail("checkpoints", checkpoints_);
     summary_.set_detail("steps_limited_by", {{"fdm", report_.steps_limited_by_fdm},
                                              {"mpm", report_.steps_limited_by_mpm},
                                              {"strip", report_.steps_limited_by_strip}});
@@ -233,6 +266,118 @@ class Loop {
   }
 
  private:
+  /// Where the step loop starts: t [s], steps done, outputs written.
+  struct Position {
+    double time = 0;
+    std::int64_t step = 0;
+    int outputs = 0;
+  };
+
+  /// A new run: the step-0 exchange (audit), the zone's activation if due, output 0.
+  Position begin() {
+    exchange({.advance = false, .audit = true});
+    initial_ = current();
+    if (watch_.due()) activate(0, 0);
+    write_output(0);
+    return {.time = 0, .step = 0, .outputs = 1};
+  }
+
+  /// A restarted run (the solvers are restored, run_cfdmp): the coupler's state from
+  /// `from`, then the output's exchange again, which brings back the strip cells, face
+  /// mass, proposals and audit totals of t^n without changing either solver.
+  Position resume(const CouplerCheckpoint& from) {
+    {
+      const io::Hdf5File file(from.file, io::Hdf5File::Mode::read);
+      restore(RestartReader(file));
+    }
+    hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
+    exchange({.advance = false, .time = from.time, .audit = true});
+    checkpoints_["restarted_from"] = {
+        {"file", from.file.string()}, {"step", from.step}, {"time_s", from.time}};
+    Logger("coupler").info("restarted from ", from.file.string(), ": step ", from.step,
+                           ", t = ", from.time, " s, ", from.outputs, " outputs written");
+    return {.time = from.time, .step = from.step, .outputs = from.outputs};
+  }
+
+  /// Each awake solver's Checkpoint, then the coupler's file, renamed into place last.
+  void checkpoint(CouplerCheckpoint at, double wall) {
+    const auto start = Clock::now();
+    at.file = coupler_checkpoint_file(options_.out_dir, at.step);
+    for (const auto& peer : peers()) {  // one at a time: a large write outlasts a step's timeout
+      cosim::Message message;
+      message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
+      hub_.send(peer, std::move(message));
+      const auto reply = hub_.receive_from(peer, options_.handoff_timeout);
+      if (!reply.header.has_checkpoint_written())
+        throw Error("solver '" + peer + "' answered Checkpoint with '" +
+                    std::string(cosim::body_name(reply.header)) + "'");
+      const auto& written = reply.header.checkpoint_written();
+      (peer == "fdm" ? at.fdm : at.mpm) = SolverCheckpoint{written.path(), written.step()};
+    }
+    std::filesystem::create_directories(at.file.parent_path());
+    io::write_path_atomically(at.file, [&](const std::filesystem::path& partial) {
+      io::Hdf5File file(partial, io::Hdf5File::Mode::create);
+      write_checkpoint_header(file, at, scene_text_, Dim);
+      RestartWriter out(file);
+      save(out, wall);
+    });
+    checkpoints_["last"] = {{"file", at.file.string()}, {"step", at.step}, {"time_s", at.time}};
+    Logger("coupler").info("checkpoint at step ", at.step, ", t = ", at.time,
+                           " s: ", at.file.string(), " (", seconds_since(start), " s)");
+  }
+
+  void save(RestartWriter& out, double wall) const {
+    const auto totals = [&](const char* name, const Totals& t) {
+      out.array(
+          "loop", name,
+          std::array<double, 5>{t.mass, t.momentum[0], t.momentum[1], t.momentum[2], t.energy});
+    };
+    totals("initial", initial_);
+    totals("switch", switch_);
+    out.text("loop", "audit_switch", audit_switch_.dump());
+    out.array("loop", "counts",
+              std::array<double, 8>{
+                  double(injected_), double(removed_), double(discarded_), injected_mass_,
+                  deposited_mass_, double(report_.steps_limited_by_fdm),
+                  double(report_.steps_limited_by_mpm), double(report_.steps_limited_by_strip)});
+    out.array("loop", "seconds",
+              std::array<double, 5>{wall, step_seconds_, report_.fdm_advance_seconds,
+                                    report_.mpm_advance_seconds, report_.max_advance_seconds});
+    out.number("loop", "mpm_slower", mpm_slower_ ? 1 : 0);
+    step_.save(out);
+    watch_.save(out);
+    gauges_.save(out);
+  }
+
+  void restore(const RestartReader& in) {
+    const auto totals = [&](const char* name) {
+      const auto v = in.array("loop", name, 5);
+      return Totals{.mass = v[0], .momentum = {v[1], v[2], v[3]}, .energy = v[4]};
+    };
+    initial_ = totals("initial");
+    switch_ = totals("switch");
+    audit_switch_ = nlohmann::json::parse(in.text("loop", "audit_switch"));
+    const auto counts = in.array("loop", "counts", 8);
+    injected_ = static_cast<std::uint64_t>(counts[0]);
+    removed_ = static_cast<std::uint64_t>(counts[1]);
+    discarded_ = static_cast<std::uint64_t>(counts[2]);
+    injected_mass_ = counts[3];
+    deposited_mass_ = counts[4];
+    report_.steps_limited_by_fdm = static_cast<std::int64_t>(counts[5]);
+    report_.steps_limited_by_mpm = static_cast<std::int64_t>(counts[6]);
+    report_.steps_limited_by_strip = static_cast<std::int64_t>(counts[7]);
+    const auto seconds = in.array("loop", "seconds", 5);
+    earlier_wall_seconds_ = seconds[0];
+    step_seconds_ = seconds[1];
+    report_.fdm_advance_seconds = seconds[2];
+    report_.mpm_advance_seconds = seconds[3];
+    report_.max_advance_seconds = seconds[4];
+    mpm_slower_ = in.number("loop", "mpm_slower") != 0;
+    step_.restore(in);
+    watch_.restore(in);
+    gauges_.restore(in);
+  }
+
   void count_limit(std::string_view by) {
     auto& count = by == "strip" ? report_.steps_limited_by_strip
                   : by == "mpm" ? report_.steps_limited_by_mpm
@@ -344,6 +489,7 @@ class Loop {
   }
 
   const config::Scene& scene_;
+  const std::string& scene_text_;
   CfdmpStep<Dim> step_;
   cosim::Message fdm_request_, mpm_request_;  ///< kept: a step reuses their memory
   ActivationWatch watch_;
@@ -357,16 +503,18 @@ class Loop {
   Totals initial_;
   CoupledRunReport report_;
   double step_seconds_ = 0;
-  bool mpm_slower_ = false;  ///< the MPM's last Advance took longer than the FDM's
+  double earlier_wall_seconds_ = 0;  ///< a restarted run's wall time up to its checkpoint
+  nlohmann::json checkpoints_;       ///< summary.json details.checkpoints
+  bool mpm_slower_ = false;          ///< the MPM's last Advance took longer than the FDM's
   std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
   double injected_mass_ = 0, deposited_mass_ = 0;
 };
 
 template <int Dim>
-CoupledRunReport run_loop(const config::Scene& scene, const ZoneLayout& layout,
-                          const SolverFeatures& features, cosim::Hub& hub, io::RunSummary& summary,
-                          const CoupledRunOptions& options) {
-  Loop<Dim> loop(scene, layout, features, hub, summary, options);
+CoupledRunReport run_loop(const config::Scene& scene, const std::string& scene_text,
+                          const ZoneLayout& layout, const SolverFeatures& features, cosim::Hub& hub,
+                          io::RunSummary& summary, const CoupledRunOptions& options) {
+  Loop<Dim> loop(scene, scene_text, layout, features, hub, summary, options);
   const auto record_failure = [&loop] {
     try {
       loop.record_summary("failed", 0);
@@ -405,16 +553,17 @@ CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kPeers);
+    if (options.restart) restore_solvers(hub, *options.restart, options.handoff_timeout);
     logger.info("zones set up: face normal to axis ", layout.face_axis, " side ", layout.face_side,
                 ", strip ", box_text(layout.strip_cells), ", ghost cells ",
                 box_text(layout.ghost_cells));
     switch (layout.dimension) {
       case 1:
-        return run_loop<1>(scene, layout, features, hub, summary, options);
+        return run_loop<1>(scene, scene_text, layout, features, hub, summary, options);
       case 2:
-        return run_loop<2>(scene, layout, features, hub, summary, options);
+        return run_loop<2>(scene, scene_text, layout, features, hub, summary, options);
       default:
-        return run_loop<3>(scene, layout, features, hub, summary, options);
+        return run_loop<3>(scene, scene_text, layout, features, hub, summary, options);
     }
   };
   const CoupledRunReport report = run_session(scene, hub, solvers, options, body);

@@ -20,6 +20,7 @@
 #include "common/config/scene.hpp"
 #include "cosim/hub.hpp"
 #include "cosim/serving/field_stream.hpp"
+#include "coupler/run/coupler_checkpoint.hpp"
 #include "coupler/run/solver_handle.hpp"
 
 namespace mpfd::coupler {
@@ -35,6 +36,10 @@ struct CoupledRunOptions {
   /// chunk or commit may take (a whole-field commit can outlast a step's reply timeout).
   std::uint64_t max_chunk_bytes = cosim::kDefaultMaxChunkBytes;
   std::chrono::milliseconds handoff_timeout{300000};
+  /// CFDMP: a checkpoint after every this many outputs (coupler_checkpoint.hpp); 0: none.
+  int checkpoint_every = 0;
+  /// CFDMP: go on from this checkpoint of the run in out_dir (newest_checkpoint).
+  std::optional<CouplerCheckpoint> restart;
 };
 
 /// What the run measured (also in summary.json).

@@ -52,6 +52,8 @@ class FaceDrainWatch {
   }
   /// The largest share any deposit of the run took from a face cell.
   [[nodiscard]] double run_max_share() const { return run_max_share_; }
+  /// A restarted run's watch goes on from the share its checkpoint recorded.
+  void resume(double run_max_share) { run_max_share_ = run_max_share; }
   /// Why the FDM cell `cell` (worst()'s, its index and position as text) emptied, when
   /// one of the last two deposits took at least kNamedShare of it; empty otherwise.
   [[nodiscard]] std::string cause_text(const std::string& cell) const;

@@ -110,6 +110,23 @@ void CoupledGauges::advance_schedule(double time) {
   pending_time_ = time;
 }
 
+void CoupledGauges::save(RestartWriter& out) const {
+  out.number("gauges", "started", started_ ? 1 : 0);
+  out.number("gauges", "next_sample", next_sample_);
+  if (!recorder_) return;
+  out.array("gauges", "times", recorder_->times());
+  out.array("gauges", "values", recorder_->values());
+}
+
+void CoupledGauges::restore(const RestartReader& in) {
+  started_ = in.number("gauges", "started") != 0;
+  next_sample_ = in.number("gauges", "next_sample");
+  if (!recorder_) return;
+  const auto times = in.array("gauges", "times");
+  const auto values = in.array("gauges", "values", times.size() * sample_.size());
+  recorder_->resume(times, values);
+}
+
 void CoupledGauges::add(bool advance, double time, GaugeSamplers samplers, cosim::Message& fdm,
                         cosim::Message& mpm) {
   fdm_.operation = mpm_.operation = fdm_all_.operation = mpm_all_.operation = following_.operation =

@@ -23,6 +23,7 @@
 #include "common/config/scene.hpp"
 #include "common/io/gauge_recorder.hpp"
 #include "cosim/message.hpp"
+#include "coupler/run/restart_file.hpp"
 
 namespace mpfd::coupler {
 
@@ -65,6 +66,11 @@ class CoupledGauges {
   void record_pressure(double time, std::span<const double> pressure);
   /// Writes gauges.h5 with every sample so far and flushes the CSV.
   void flush();
+
+  /// Its state in a coupled checkpoint (restart_file.hpp): the schedule and every
+  /// sample so far; restore() also rewrites gauges.csv with those samples.
+  void save(RestartWriter& out) const;
+  void restore(const RestartReader& in);
 
   /// [{name, position [m], solver}] for summary.json.
   [[nodiscard]] nlohmann::json listing() const;

@@ -91,7 +91,22 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
     fdm_program = program(launch.fdm_program, self, "fdm_solver");
     mpm_program = program(launch.mpm_program, self, "mpm_solver");
   }
-  io::prepare_output_directory(options.out_dir, launch.overwrite);
+  if (afdmp && (options.checkpoint_every > 0 || launch.restart))
+    throw Error("--checkpoint-every and --restart take cfdmp scenes; '" + scene_file.string() +
+                "' has solver.method afdmp, whose phases the coupler cannot checkpoint yet "
+                "(docs/coupler.md, Checkpoint and restart)");
+  if (options.checkpoint_every < 0)
+    throw Error("--checkpoint-every " + std::to_string(options.checkpoint_every) +
+                ": expected a count of outputs >= 0 (0: none)");
+  if (launch.restart) {
+    if (launch.overwrite)
+      throw Error(
+          "--restart goes on with the run in --out; --overwrite would start a new one "
+          "there: give one of the two");
+    options.restart = newest_checkpoint(options.out_dir, text, make_zone_layout(scene).dimension);
+  } else {
+    io::prepare_output_directory(options.out_dir, launch.overwrite);
+  }
   options.scene_file = scene_file;
 
   cosim::TransportOptions transport;

@@ -23,6 +23,8 @@ struct LaunchOptions {
   std::filesystem::path fdm_program;  ///< for processes; empty: beside the coupler
   std::filesystem::path mpm_program;
   bool overwrite = false;
+  /// Go on with the run in the output folder from its newest checkpoint (cfdmp).
+  bool restart = false;
 };
 
 /// Parses "fdm=URL,mpm=URL"; throws mpfd::Error naming a bad entry.
@@ -32,8 +34,9 @@ struct LaunchOptions {
 [[nodiscard]] ServeFunction embedded_serve(const std::string& name);
 
 /// Loads and checks the scene (a bad scene or layout is refused before
-/// anything starts or is written), prepares the output folder, starts the
-/// solvers and runs. Throws mpfd::Error.
+/// anything starts or is written), prepares the output folder (or, with
+/// launch.restart, finds its newest checkpoint and keeps everything in it),
+/// starts the solvers and runs. Throws mpfd::Error.
 CoupledRunReport launch_run(const std::filesystem::path& scene_file, const LaunchOptions& launch,
                             CoupledRunOptions options, const std::filesystem::path& self);
 

@@ -1,0 +1,59 @@
+#include "coupler/run/restart_file.hpp"
+
+#include "common/core/error.hpp"
+
+namespace mpfd::coupler {
+
+void RestartWriter::make_group(const std::string& owner) {
+  if (!file_.exists("/" + owner)) file_.create_group("/" + owner);
+}
+
+void RestartWriter::number(const std::string& owner, const std::string& name, double value) {
+  make_group(owner);
+  file_.write_attribute("/" + owner, name, value);
+}
+
+void RestartWriter::array(const std::string& owner, const std::string& name,
+                          std::span<const double> values) {
+  make_group(owner);
+  file_.write_dataset("/" + owner + "/" + name, values, {values.size()}, "");
+}
+
+void RestartWriter::text(const std::string& owner, const std::string& name,
+                         const std::string& value) {
+  make_group(owner);
+  file_.write_attribute("/" + owner, name, value);
+}
+
+double RestartReader::number(const std::string& owner, const std::string& name) const {
+  try {
+    return file_.read_attribute("/" + owner, name);
+  } catch (const std::exception&) {
+    refuse("has no number '" + name + "' in '/" + owner + "' (a coupler checkpoint has it)");
+  }
+}
+
+std::vector<double> RestartReader::array(const std::string& owner, const std::string& name,
+                                         std::size_t count) const {
+  const std::string path = "/" + owner + "/" + name;
+  if (!file_.exists(path)) refuse("has no array '" + path + "' (a coupler checkpoint has it)");
+  std::vector<double> values = file_.read_dataset(path).values;
+  if (count != kAnyCount && values.size() != count)
+    refuse("holds " + std::to_string(values.size()) + " values in '" + path +
+           "'; this scene needs " + std::to_string(count));
+  return values;
+}
+
+std::string RestartReader::text(const std::string& owner, const std::string& name) const {
+  try {
+    return file_.read_string_attribute("/" + owner, name);
+  } catch (const std::exception&) {
+    refuse("has no text '" + name + "' in '/" + owner + "' (a coupler checkpoint has it)");
+  }
+}
+
+void RestartReader::refuse(const std::string& what) const {
+  throw Error("restart: '" + file_.path().string() + "' " + what);
+}
+
+}  // namespace mpfd::coupler

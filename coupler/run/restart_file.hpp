@@ -1,0 +1,49 @@
+#pragma once
+// The coupler's own part of a coupled checkpoint (coupler/run/coupler_checkpoint.hpp):
+// named numbers and arrays in an HDF5 file, "/<owner>/<name>" (a number is an
+// attribute of the owner's group, an array a dataset in it), read back with
+// errors that name the file and the entry.
+
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "common/io/hdf5_file.hpp"
+
+namespace mpfd::coupler {
+
+class RestartWriter {
+ public:
+  explicit RestartWriter(io::Hdf5File& file) : file_(file) {}
+
+  /// Writes `value` as "/<owner>/<name>".
+  void number(const std::string& owner, const std::string& name, double value);
+  void array(const std::string& owner, const std::string& name, std::span<const double> values);
+  void text(const std::string& owner, const std::string& name, const std::string& value);
+
+ private:
+  void make_group(const std::string& owner);
+  io::Hdf5File& file_;
+};
+
+class RestartReader {
+ public:
+  static constexpr std::size_t kAnyCount = std::numeric_limits<std::size_t>::max();
+
+  explicit RestartReader(const io::Hdf5File& file) : file_(file) {}
+
+  [[nodiscard]] double number(const std::string& owner, const std::string& name) const;
+  /// The array "/<owner>/<name>"; it must hold `count` values unless kAnyCount.
+  [[nodiscard]] std::vector<double> array(const std::string& owner, const std::string& name,
+                                          std::size_t count = kAnyCount) const;
+  [[nodiscard]] std::string text(const std::string& owner, const std::string& name) const;
+  /// Throws mpfd::Error "restart: '<file>' <what>".
+  [[noreturn]] void refuse(const std::string& what) const;
+
+ private:
+  const io::Hdf5File& file_;
+};
+
+}  // namespace mpfd::coupler
