@@ -28,12 +28,13 @@ int main(int argc, char** argv) {
   run->add_option("--record", record, "record every message to FILE (.mpfdrec, proto §10)");
   int checkpoint_every = 0;
   run->add_option("--checkpoint-every", checkpoint_every,
-                  "cfdmp: checkpoint both solvers and the coupler after every K-th output "
-                  "(<out>/checkpoints, fdm/checkpoints, mpm/checkpoints); 0: none")
+                  "checkpoint the solvers and the coupler after every K-th output "
+                  "(<out>/checkpoints, fdm/checkpoints, mpm/checkpoints; afdmp: in its FDM and "
+                  "FSI phases); 0: none")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--restart", launch.restart,
-                "cfdmp: go on with the run in --out from its newest checkpoint (same scene file)");
+                "go on with the run in --out from its newest checkpoint (same scene file)");
   run->add_flag("--processes", processes, "start the solvers as child processes (over ipc)");
   run->add_option("--endpoints", endpoints,
                   "fdm=URL,mpm=URL: bind these (with --processes the children connect to them; "

@@ -9,7 +9,7 @@
 namespace mpfd::io {
 namespace {
 
-void write_csv_number(std::ofstream& csv, double x) {
+void write_csv_number(std::ostream& csv, double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.10g", x);
   csv << text;
@@ -18,22 +18,21 @@ void write_csv_number(std::ofstream& csv, double x) {
 }  // namespace
 
 GaugeRecorder::GaugeRecorder(std::filesystem::path out_dir, std::vector<GaugePoint> gauges,
-                             std::vector<GaugeQuantity> quantities)
+                             std::vector<GaugeQuantity> quantities, GaugeStart start)
     : out_dir_(std::move(out_dir)), gauges_(std::move(gauges)), quantities_(std::move(quantities)) {
-  open_csv();
-}
-
-void GaugeRecorder::open_csv() {
+  if (start == GaugeStart::restart) return;
   const auto path = out_dir_ / "gauges.csv";
-  csv_.close();
-  csv_.clear();
   csv_.open(path, std::ios::trunc);
   if (!csv_) throw Error("cannot open " + path.string() + " for writing");
-  csv_ << "time[s]";
+  write_csv_header(csv_);
+}
+
+void GaugeRecorder::write_csv_header(std::ostream& csv) const {
+  csv << "time[s]";
   for (const auto& g : gauges_)
     for (const auto& q : quantities_)
-      csv_ << ',' << g.name << '.' << q.name << '[' << q.units << ']';
-  csv_ << '\n';
+      csv << ',' << g.name << '.' << q.name << '[' << q.units << ']';
+  csv << '\n';
 }
 
 void GaugeRecorder::reserve(std::size_t samples) {
@@ -45,18 +44,21 @@ void GaugeRecorder::record(double time, std::span<const double> values) {
   if (values.size() != gauges_.size() * quantities_.size())
     throw Error("gauge sample has " + std::to_string(values.size()) + " values; expected " +
                 std::to_string(gauges_.size() * quantities_.size()));
+  if (!csv_.is_open())
+    throw Error("gauge recorder of a restarted run: resume() must come before the first sample");
   times_.push_back(time);
   values_.insert(values_.end(), values.begin(), values.end());
-  write_csv_row(time, values);
+  write_csv_row(csv_, time, values);
 }
 
-void GaugeRecorder::write_csv_row(double time, std::span<const double> values) {
-  write_csv_number(csv_, time);
+void GaugeRecorder::write_csv_row(std::ostream& csv, double time,
+                                  std::span<const double> values) const {
+  write_csv_number(csv, time);
   for (const double v : values) {
-    csv_ << ',';
-    write_csv_number(csv_, v);
+    csv << ',';
+    write_csv_number(csv, v);
   }
-  csv_ << '\n';
+  csv << '\n';
 }
 
 void GaugeRecorder::resume(std::span<const double> times, std::span<const double> values) {
@@ -66,11 +68,18 @@ void GaugeRecorder::resume(std::span<const double> times, std::span<const double
                 std::to_string(times.size()) + " samples of " + std::to_string(gauges_.size()) +
                 " gauges x " + std::to_string(quantities_.size()) + " quantities; expected " +
                 std::to_string(times.size() * per_sample));
+  const auto path = out_dir_ / "gauges.csv";
+  csv_.close();
+  write_file_atomically(path, [&](std::ostream& csv) {
+    write_csv_header(csv);
+    for (std::size_t s = 0; s < times.size(); ++s)
+      write_csv_row(csv, times[s], values.subspan(s * per_sample, per_sample));
+  });
   times_.assign(times.begin(), times.end());
   values_.assign(values.begin(), values.end());
-  open_csv();
-  for (std::size_t s = 0; s < times_.size(); ++s)
-    write_csv_row(times_[s], std::span<const double>(values_).subspan(s * per_sample, per_sample));
+  csv_.clear();
+  csv_.open(path, std::ios::app);
+  if (!csv_) throw Error("cannot open " + path.string() + " for appending");
 }
 
 void GaugeRecorder::flush() {

@@ -23,11 +23,15 @@ struct GaugeQuantity {
   std::string units;  // e.g. "Pa"
 };
 
+/// A new run's recorder starts gauges.csv; a restarted run's leaves the file as the
+/// stopped run left it until resume() replaces it.
+enum class GaugeStart { fresh, restart };
+
 class GaugeRecorder {
  public:
-  /// Opens <out_dir>/gauges.csv and writes its header.
+  /// Opens <out_dir>/gauges.csv and writes its header (GaugeStart::fresh).
   GaugeRecorder(std::filesystem::path out_dir, std::vector<GaugePoint> gauges,
-                std::vector<GaugeQuantity> quantities);
+                std::vector<GaugeQuantity> quantities, GaugeStart start = GaugeStart::fresh);
 
   /// One sample: values gauge-major, gauges().size() * quantities().size().
   void record(double time, std::span<const double> values);
@@ -44,14 +48,14 @@ class GaugeRecorder {
   [[nodiscard]] std::span<const double> times() const { return times_; }
   [[nodiscard]] std::span<const double> values() const { return values_; }
   /// Replaces the samples with `times` and `values` (those of an earlier recorder of the
-  /// same gauges) and rewrites gauges.csv with them: a restarted run goes on from its
-  /// checkpoint's histories, not from the rows the run wrote after it. Throws mpfd::Error
-  /// when the counts do not fit.
+  /// same gauges) and rewrites gauges.csv with them (beside it, then renamed): a restarted
+  /// run goes on from its checkpoint's histories, not from the rows the run wrote after
+  /// it. Throws mpfd::Error when the counts do not fit, before anything changes.
   void resume(std::span<const double> times, std::span<const double> values);
 
  private:
-  void open_csv();
-  void write_csv_row(double time, std::span<const double> values);
+  void write_csv_header(std::ostream& csv) const;
+  void write_csv_row(std::ostream& csv, double time, std::span<const double> values) const;
 
   std::filesystem::path out_dir_;
   std::vector<GaugePoint> gauges_;

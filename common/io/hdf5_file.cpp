@@ -134,6 +134,32 @@ void Hdf5File::write_attribute(const std::string& object, const std::string& nam
   write_attribute_raw(object, name, type.get(), type.get(), value.empty() ? "" : value.c_str(), 0);
 }
 
+void Hdf5File::write_text(const std::string& path, const std::string& text) {
+  const Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), text.empty() ? 1 : text.size());
+  const Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  const Hdf5Handle set(H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(), H5P_DEFAULT,
+                                  H5P_DEFAULT, H5P_DEFAULT),
+                       H5Dclose);
+  if (set.get() < 0) fail("cannot create text dataset", path);
+  if (H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
+               text.empty() ? "" : text.c_str()) < 0)
+    fail("cannot write text dataset", path);
+}
+
+std::string Hdf5File::read_text(const std::string& path) const {
+  if (!exists(path)) fail("no text dataset", path);
+  const Hdf5Handle set(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.get() < 0) fail("cannot open text dataset", path);
+  const Hdf5Handle type(H5Dget_type(set.get()), H5Tclose);
+  if (H5Tget_class(type.get()) != H5T_STRING) fail("not a text dataset:", path);
+  std::string text(H5Tget_size(type.get()), '\0');
+  if (H5Dread(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0)
+    fail("cannot read text dataset", path);
+  text.erase(text.find_last_not_of('\0') + 1);
+  return text;
+}
+
 bool Hdf5File::exists(const std::string& path) const {
   return H5Lexists(file_.get(), path.c_str(), H5P_DEFAULT) > 0;
 }

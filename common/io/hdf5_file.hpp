@@ -56,11 +56,16 @@ class Hdf5File {
   void write_attribute(const std::string& object, const std::string& name,
                        const std::string& value);
 
+  /// A text of any length as a scalar string dataset (an attribute holds at most 64 KiB).
+  void write_text(const std::string& path, const std::string& text);
+
   [[nodiscard]] bool exists(const std::string& path) const;
   [[nodiscard]] DatasetData read_dataset(const std::string& path) const;
   [[nodiscard]] double read_attribute(const std::string& object, const std::string& name) const;
   [[nodiscard]] std::string read_string_attribute(const std::string& object,
                                                   const std::string& name) const;
+  /// The text of write_text().
+  [[nodiscard]] std::string read_text(const std::string& path) const;
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
  private:

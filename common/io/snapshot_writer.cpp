@@ -47,6 +47,13 @@ std::vector<XdmfStep> steps_of(const auto& entries, bool particles) {
   return steps;
 }
 
+/// The file of snapshot number `index`, relative to the output folder.
+std::string snapshot_name(int index) {
+  char name[40];
+  std::snprintf(name, sizeof name, "snapshots/snapshot_%06d.h5", index);
+  return name;
+}
+
 using FieldList = std::vector<std::pair<std::string, int>>;
 
 nlohmann::json fields_json(const FieldList& fields) {
@@ -90,8 +97,7 @@ std::filesystem::path SnapshotWriter::write(std::int64_t step, double time,
     for (const auto& f : particles) check_field(f, particle_count, "particle");
   }
 
-  char name[40];
-  std::snprintf(name, sizeof name, "snapshots/snapshot_%06d.h5", index());
+  const std::string name = snapshot_name(index());
   const std::filesystem::path file = out_dir_ / name;
   const auto& n = grid_.cells();
   const std::vector<std::size_t> cell_shape{static_cast<std::size_t>(n[2]),
@@ -135,14 +141,13 @@ std::string SnapshotWriter::history() const {
   return list.dump();
 }
 
-void SnapshotWriter::resume(const std::string& history) {
+std::vector<SnapshotWriter::Entry> SnapshotWriter::parse_history(const std::string& history) {
   std::vector<Entry> entries;
   try {
     const nlohmann::json list = nlohmann::json::parse(history);
     if (!list.is_array()) throw Error("not a list");
     for (const auto& e : list) {
-      char name[40];
-      std::snprintf(name, sizeof name, "snapshots/snapshot_%06zu.h5", entries.size());
+      const std::string name = snapshot_name(static_cast<int>(entries.size()));
       if (e.at("file").get<std::string>() != name)
         throw Error("entry " + std::to_string(entries.size()) + " names '" +
                     e.at("file").get<std::string>() + "', expected '" + name + "'");
@@ -153,7 +158,19 @@ void SnapshotWriter::resume(const std::string& history) {
   } catch (const std::exception& error) {
     throw Error("snapshot series to resume: " + std::string(error.what()));
   }
-  entries_ = std::move(entries);
+  return entries;
+}
+
+void SnapshotWriter::check_history(const std::string& history) {
+  (void)parse_history(history);
+}
+
+bool SnapshotWriter::empty_history(const std::string& history) {
+  return history == "[]";
+}
+
+void SnapshotWriter::resume(const std::string& history) {
+  entries_ = parse_history(history);
   if (!entries_.empty()) write_sidecars();
 }
 

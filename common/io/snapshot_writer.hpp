@@ -34,8 +34,13 @@ class SnapshotWriter {
   /// Continues the series `history` (history() of an earlier writer over the same
   /// folder): the next write() is snapshot number N, and the sidecars list the N
   /// before it. A restart must not number its snapshots from 0 over the earlier
-  /// ones. Throws mpfd::Error naming what is malformed.
+  /// ones. Throws mpfd::Error naming what is malformed (check_history first, to
+  /// refuse before anything changes).
   void resume(const std::string& history);
+  /// Throws what resume(history) would for a malformed `history`; changes nothing.
+  static void check_history(const std::string& history);
+  /// True for the history of a writer that wrote nothing.
+  [[nodiscard]] static bool empty_history(const std::string& history);
 
  private:
   struct Entry {
@@ -46,6 +51,7 @@ class SnapshotWriter {
     std::size_t particle_count;
   };
   void write_sidecars() const;
+  [[nodiscard]] static std::vector<Entry> parse_history(const std::string& history);
 
   std::filesystem::path out_dir_;
   grid::UniformGrid grid_;

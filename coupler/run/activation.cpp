@@ -8,7 +8,7 @@
 namespace mpfd::coupler {
 namespace {
 
-constexpr const char* kOwner = "activation";
+constexpr const char* kActivationOwner = "activation";
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  ///< an empty optional
 
 std::optional<double> optional_of(double value) {
@@ -63,24 +63,24 @@ std::string ActivationWatch::activation_text() const {
 }
 
 void ActivationWatch::save(RestartWriter& out) const {
-  out.number(kOwner, "dormant", dormant_ ? 1 : 0);
-  out.number(kOwner, "trigger_time", trigger_time_.value_or(kNone));
-  out.number(kOwner, "trigger_pressure", trigger_pressure_);
-  out.number(kOwner, "peak_pressure", peak_pressure_);
-  out.number(kOwner, "activation_time", activation_time_.value_or(kNone));
-  out.number(kOwner, "activation_step", static_cast<double>(activation_step_));
+  out.number(kActivationOwner, "dormant", dormant_ ? 1 : 0);
+  out.number(kActivationOwner, "trigger_time", trigger_time_.value_or(kNone));
+  out.number(kActivationOwner, "trigger_pressure", trigger_pressure_);
+  out.number(kActivationOwner, "peak_pressure", peak_pressure_);
+  out.number(kActivationOwner, "activation_time", activation_time_.value_or(kNone));
+  out.number(kActivationOwner, "activation_step", static_cast<double>(activation_step_));
 }
 
 void ActivationWatch::restore(const RestartReader& in) {
-  const bool dormant = in.number(kOwner, "dormant") != 0;
+  const bool dormant = in.number(kActivationOwner, "dormant") != 0;
   if (dormant && !threshold_)
     in.refuse("holds a sleeping MPM zone; this scene has no zones.mpm.activation_pressure");
   dormant_ = dormant;
-  trigger_time_ = optional_of(in.number(kOwner, "trigger_time"));
-  trigger_pressure_ = in.number(kOwner, "trigger_pressure");
-  peak_pressure_ = in.number(kOwner, "peak_pressure");
-  activation_time_ = optional_of(in.number(kOwner, "activation_time"));
-  activation_step_ = static_cast<std::int64_t>(in.number(kOwner, "activation_step"));
+  trigger_time_ = optional_of(in.number(kActivationOwner, "trigger_time"));
+  trigger_pressure_ = in.number(kActivationOwner, "trigger_pressure");
+  peak_pressure_ = in.number(kActivationOwner, "peak_pressure");
+  activation_time_ = optional_of(in.number(kActivationOwner, "activation_time"));
+  activation_step_ = static_cast<std::int64_t>(in.number(kActivationOwner, "activation_step"));
 }
 
 }  // namespace mpfd::coupler

@@ -115,6 +115,51 @@ Conserved stage_and_fill(const config::Scene& scene, const SphericalStage& stage
   return c;
 }
 
+void save_conserved(RestartWriter& out, const std::string& owner, const std::string& name,
+                    const Conserved& amount) {
+  out.array(owner, name,
+            std::array<double, 6>{amount.mass, amount.momentum[0], amount.momentum[1],
+                                  amount.momentum[2], amount.energy, amount.momentum_scale});
+}
+
+Conserved restored_conserved(const RestartReader& in, const std::string& owner,
+                             const std::string& name) {
+  const auto v = in.array(owner, name, 6);
+  return {.mass = v[0], .momentum = {v[1], v[2], v[3]}, .energy = v[4], .momentum_scale = v[5]};
+}
+
+void RunLongAudit::save(RestartWriter& out) const {
+  const std::pair<const char*, const Conserved*> terms[] = {{"initial", &initial_},
+                                                            {"fdm", &fdm_},
+                                                            {"mpm", &mpm_},
+                                                            {"stage", &stage_},
+                                                            {"placeholder", &placeholder_},
+                                                            {"fdm_outflow", &fdm_outflow_},
+                                                            {"mpm_outflow", &mpm_outflow_}};
+  for (const auto& [name, term] : terms) save_conserved(out, "audit", name, *term);
+  nlohmann::json names = nlohmann::json::array();
+  for (const auto& [name, amount] : dropped_) {
+    names.push_back(name);
+    save_conserved(out, "audit", "dropped_" + name, amount);
+  }
+  out.text("audit", "dropped", names.dump());
+}
+
+void RunLongAudit::restore(const RestartReader& in) {
+  RunLongAudit back;
+  const std::pair<const char*, Conserved*> terms[] = {{"initial", &back.initial_},
+                                                      {"fdm", &back.fdm_},
+                                                      {"mpm", &back.mpm_},
+                                                      {"stage", &back.stage_},
+                                                      {"placeholder", &back.placeholder_},
+                                                      {"fdm_outflow", &back.fdm_outflow_},
+                                                      {"mpm_outflow", &back.mpm_outflow_}};
+  for (const auto& [name, term] : terms) *term = restored_conserved(in, "audit", name);
+  for (const auto& name : in.json("audit", "dropped"))
+    back.dropped_[name] = restored_conserved(in, "audit", "dropped_" + name.get<std::string>());
+  *this = std::move(back);
+}
+
 void RunLongAudit::start() {
   initial_ = current();
 }

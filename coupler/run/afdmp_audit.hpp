@@ -36,6 +36,7 @@
 #include "cosim/message.hpp"
 #include "coupler/run/afdmp_layout.hpp"
 #include "coupler/run/handoff_audit.hpp"
+#include "coupler/run/restart_file.hpp"
 #include "coupler/run/spherical_stage.hpp"
 
 namespace mpfd::coupler {
@@ -63,6 +64,12 @@ struct AuditReading {
 /// shells inside it (mass, energy; momentum zero, see above) plus the scene's
 /// `initial` state in the rest of the grid (the handoff's ambient fill).
 [[nodiscard]] Conserved stage_and_fill(const config::Scene& scene, const SphericalStage& stage);
+
+/// A Conserved as "/<owner>/<name>" of a coupled checkpoint, and back.
+void save_conserved(RestartWriter& out, const std::string& owner, const std::string& name,
+                    const Conserved& amount);
+[[nodiscard]] Conserved restored_conserved(const RestartReader& in, const std::string& owner,
+                                           const std::string& name);
 
 class RunLongAudit {
  public:
@@ -94,6 +101,10 @@ class RunLongAudit {
   /// Each term, the holders' parts and the momentum errors relative to
   /// sqrt(2 M E) (details.afdmp.audit).
   [[nodiscard]] nlohmann::json summary() const;
+
+  /// Every term, in a coupled checkpoint (restart_file.hpp), and back.
+  void save(RestartWriter& out) const;
+  void restore(const RestartReader& in);
 
  private:
   Conserved initial_;

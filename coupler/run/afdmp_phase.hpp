@@ -93,6 +93,11 @@ class PhaseMachine {
   /// mpfd::Error naming the phase and the missing input.
   std::optional<Transition> next(const Observation& observation);
 
+  /// The phase, the charge's first explosive count and the FSI watch, in a coupled
+  /// checkpoint (restart_file.hpp), and back.
+  void save(RestartWriter& out) const;
+  void restore(const RestartReader& in);
+
  private:
   std::optional<Transition> trigger(const Observation& observation);
   Transition move_to(AfdmpPhase to, AfdmpTrigger why, const Observation& observation, double value,

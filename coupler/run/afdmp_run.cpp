@@ -14,6 +14,7 @@
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
 #include "common/grid/uniform_grid.hpp"
+#include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "cosim/arrays.hpp"
 #include "coupler/handoff/detonation_trigger.hpp"
@@ -21,6 +22,7 @@
 #include "coupler/run/afdmp_handoffs.hpp"
 #include "coupler/run/afdmp_layout.hpp"
 #include "coupler/run/afdmp_phase.hpp"
+#include "coupler/run/coupler_checkpoint.hpp"
 #include "coupler/run/field_transfer.hpp"
 #include "coupler/run/gauges.hpp"
 #include "coupler/run/session.hpp"
@@ -96,10 +98,11 @@ double proposed_dt(const cosim::Message& reply, const std::string& peer) {
 
 class AfdmpLoop {
  public:
-  AfdmpLoop(const config::Scene& scene, const AfdmpLayout& layout, AuditOutflow outflow,
-            bool material_import, cosim::Hub& hub, io::RunSummary& summary,
+  AfdmpLoop(const config::Scene& scene, const std::string& scene_text, const AfdmpLayout& layout,
+            AuditOutflow outflow, bool material_import, cosim::Hub& hub, io::RunSummary& summary,
             const CoupledRunOptions& options)
       : scene_(scene),
+        scene_text_(scene_text),
         layout_(layout),
         outflow_(outflow),
         start_(start_of(scene)),
@@ -109,7 +112,8 @@ class AfdmpLoop {
                   .activation_pressure = layout.activation_pressure,
                   .handoff_radius = scene.solver.afdmp.spherical.handoff_radius.value_or(0.0)}),
         explosive_(explosive_materials(scene)),
-        gauges_(scene, options.out_dir),
+        gauges_(scene, options.out_dir,
+                options.restart ? io::GaugeStart::restart : io::GaugeStart::fresh),
         hub_(hub),
         summary_(summary),
         options_(options),
@@ -119,37 +123,19 @@ class AfdmpLoop {
         grid_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
                                              scene.domain.cells)) {
     for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
+    checkpoints_["every_outputs"] = options.checkpoint_every;
   }
 
   CoupledRunReport run() {
     const auto start = Clock::now();
     phase_start_ = start;
-    if (start_ == AfdmpStart::spherical) {
-      stage_.emplace(scene_);
-      holder_ = "spherical";
-      if (layout_.fsi_cells) {
-        discard_mpm_fluid();
-        audit_holder("mpm");  // the FSI zone it keeps
-        // The FDM will hold the placeholder there, counted by the MPM's particles.
-        audit_.set_placeholder(placeholder_conserved(scene_, layout_));
-      } else {
-        retire("mpm", "the 1D start and the FDM carry this scene; no FSI zone");
-      }
-      observe_stage();
-      sample_stage_gauges(0);
-      audit_holder("spherical");
-    } else {
-      step_mpm_detonation(false, 0, 0);
-      audit_holder("mpm");
-    }
-    audit_.start();
-    handle(machine_.next(observation_), 0, 0);
-    write_output(0);
+    const Position at = options_.restart ? resume(*options_.restart) : begin();
+    const auto wall = [&] { return earlier_wall_seconds_ + seconds_since(start); };
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
     const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
-    int outputs = 1;
-    double t = 0;
-    std::int64_t n = 0;
+    int outputs = at.outputs;
+    double t = at.time;
+    std::int64_t n = at.step;
     while (machine_.phase() != AfdmpPhase::done) {
       if (n >= scene_.time.max_steps)
         throw Error("scene '" + scene_.name +
@@ -174,13 +160,18 @@ class AfdmpLoop {
       handle(machine_.next(observation_), t, n);
       if (output_now) {
         write_output(outputs++);
-        record_summary("running", seconds_since(start));
+        record_summary("running", wall());
+        const int every = options_.checkpoint_every;
+        if (every > 0 && (outputs - 1) % every == 0 && machine_.phase() != AfdmpPhase::done) {
+          checkpoint({.step = n, .time = t, .outputs = outputs}, wall());
+          record_summary("running", wall());
+        }
       }
       keep_idle_alive();
       progress.update(n, t);
     }
     progress.finish(n, t);
-    report_.wall_seconds = seconds_since(start);
+    report_.wall_seconds = wall();
     record_summary("completed", report_.wall_seconds);
     return report_;
   }
@@ -205,16 +196,162 @@ class AfdmpLoop {
                                   {"handoffs", handoffs_},
                                   {"audit", audit_.summary()},
                                   {"outputs", outputs_}});
+    summary_.set_detail("checkpoints", checkpoints_);
     summary_.set_detail("protocol", {{"fdm_outflow", outflow_.fdm},
                                      {"mpm_outflow", outflow_.mpm},
                                      {"fdm_material_import", settings_.material_import}});
     summary_.write(options_.out_dir / "summary.json");
   }
 
+  /// False while a restart has not yet restored the run: its summary would hold nothing
+  /// yet and must not replace the stopped run's files (gauges.h5 among them).
+  [[nodiscard]] bool summary_ready() const { return summary_ready_; }
+
   /// The peers that have not been shut down (for the final shutdown).
   [[nodiscard]] const std::set<std::string>& retired() const { return retired_; }
 
  private:
+  /// Where the step loop starts: t [s], steps done, outputs written.
+  struct Position {
+    double time = 0;
+    std::int64_t step = 0;
+    int outputs = 0;
+  };
+
+  /// A new run: phase 1 (or the 1D stage) set up, the audit's start, output 0.
+  Position begin() {
+    if (start_ == AfdmpStart::spherical) {
+      stage_.emplace(scene_);
+      holder_ = "spherical";
+      if (layout_.fsi_cells) {
+        discard_mpm_fluid();
+        audit_holder("mpm");  // the FSI zone it keeps
+        // The FDM will hold the placeholder there, counted by the MPM's particles.
+        audit_.set_placeholder(placeholder_conserved(scene_, layout_));
+      } else {
+        retire("mpm", "the 1D start and the FDM carry this scene; no FSI zone");
+      }
+      observe_stage();
+      sample_stage_gauges(0);
+      audit_holder("spherical");
+    } else {
+      step_mpm_detonation(false, 0, 0);
+      audit_holder("mpm");
+    }
+    audit_.start();
+    handle(machine_.next(observation_), 0, 0);
+    write_output(0);
+    return {.time = 0, .step = 0, .outputs = 1};
+  }
+
+  /// A restarted run (the solvers are restored, run_afdmp): the coupler's state from
+  /// `from`, and the solvers retired before it are retired again.
+  Position resume(const CouplerCheckpoint& from) {
+    {
+      const io::Hdf5File file(from.file, io::Hdf5File::Mode::read);
+      const RestartReader in(file);
+      restore(in);
+      for (const auto& [peer, checkpoint] :
+           {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}})
+        if (checkpoint.has_value() == retired_.contains(peer))
+          in.refuse(std::string("names ") + (checkpoint ? "a" : "no") + " checkpoint of solver '" +
+                    peer + "', which " + (checkpoint ? "was" : "was not") + " retired (attribute " +
+                    peer + "_path, /afdmp/" + peer + "_retired)");
+    }
+    report_.steps = from.step;
+    report_.time = from.time;
+    for (const auto& peer : kAfdmpPeers)
+      if (retired_.contains(peer))
+        retire(peer, "retired before the checkpoint this run restarts from");
+    for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
+    hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
+    summary_ready_ = true;
+    checkpoints_["restarted_from"] = {
+        {"file", from.file.string()}, {"step", from.step}, {"time_s", from.time}};
+    checkpoints_["last"] = checkpoints_["restarted_from"];
+    Logger("coupler").info("restarted from ", from.file.string(), ": phase ",
+                           phase_name(machine_.phase()), ", step ", from.step, ", t = ", from.time,
+                           " s, ", from.outputs, " outputs written");
+    return {.time = from.time, .step = from.step, .outputs = from.outputs};
+  }
+
+  /// In the FDM and FSI phases, whose whole state the solvers hold: each solver still
+  /// needed checkpoints, then the coupler's file is renamed into place last. The MPM
+  /// detonation and the 1D stage are short and hold state in the coupler: none there.
+  void checkpoint(CouplerCheckpoint at, double wall) {
+    const AfdmpPhase phase = machine_.phase();
+    if (phase != AfdmpPhase::fdm_blast && phase != AfdmpPhase::mpm_fsi) {
+      Logger("coupler").info("no checkpoint at step ", at.step, ": phase ", phase_name(phase),
+                             " is not checkpointed (only fdm_blast and mpm_fsi are)");
+      return;
+    }
+    const auto start = Clock::now();
+    at.file = coupler_checkpoint_file(options_.out_dir, at.step);
+    for (const auto& peer : kAfdmpPeers) {
+      if (retired_.contains(peer)) continue;
+      cosim::Message message;
+      message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
+      hub_.send(peer, std::move(message));
+      const auto reply = hub_.receive_from(peer, options_.handoff_timeout);
+      contact_[peer] = Clock::now();
+      if (!reply.header.has_checkpoint_written())
+        throw Error("solver '" + peer + "' answered Checkpoint with '" +
+                    std::string(cosim::body_name(reply.header)) + "'");
+      const auto& written = reply.header.checkpoint_written();
+      (peer == "fdm" ? at.fdm : at.mpm) = SolverCheckpoint{written.path(), written.step()};
+    }
+    std::filesystem::create_directories(at.file.parent_path());
+    io::write_path_atomically(at.file, [&](const std::filesystem::path& partial) {
+      io::Hdf5File file(partial, io::Hdf5File::Mode::create);
+      write_checkpoint_header(file, at, scene_text_, grid_dimension(scene_));
+      RestartWriter out(file);
+      save(out, wall);
+    });
+    checkpoints_["last"] = {{"file", at.file.string()}, {"step", at.step}, {"time_s", at.time}};
+    Logger("coupler").info("checkpoint at step ", at.step, ", t = ", at.time,
+                           " s: ", at.file.string(), " (", seconds_since(start), " s)");
+  }
+
+  void save(RestartWriter& out, double wall) const {
+    out.text("afdmp", "holder", holder_);
+    out.number("afdmp", "dt", dt_);
+    out.number("afdmp", "fdm_retired", retired_.contains("fdm") ? 1 : 0);
+    out.number("afdmp", "mpm_retired", retired_.contains("mpm") ? 1 : 0);
+    save_conserved(out, "afdmp", "placeholder", placeholder_);
+    out.text("afdmp", "phases", phases_.dump());
+    out.text("afdmp", "transitions", transitions_.dump());
+    out.text("afdmp", "handoffs", handoffs_.dump());
+    out.text("afdmp", "outputs", outputs_.dump());
+    out.number("afdmp", "phase_time", phase_time_);
+    out.number("afdmp", "phase_steps", static_cast<double>(phase_steps_));
+    out.number("afdmp", "wall_seconds", wall);
+    machine_.save(out);
+    audit_.save(out);
+    gauges_.save(out);
+  }
+
+  void restore(const RestartReader& in) {
+    const std::string holder = in.text("afdmp", "holder");
+    if (holder != "fdm" && holder != "mpm")
+      in.refuse("holds '" + holder + "' as the state's holder; a checkpoint has 'fdm' or 'mpm'");
+    holder_ = holder;
+    dt_ = in.number("afdmp", "dt");
+    retired_.clear();
+    for (const auto& peer : kAfdmpPeers)
+      if (in.number("afdmp", peer + "_retired") != 0) retired_.insert(peer);
+    placeholder_ = restored_conserved(in, "afdmp", "placeholder");
+    phases_ = in.json("afdmp", "phases");
+    transitions_ = in.json("afdmp", "transitions");
+    handoffs_ = in.json("afdmp", "handoffs");
+    outputs_ = in.json("afdmp", "outputs");
+    phase_time_ = in.number("afdmp", "phase_time");
+    phase_steps_ = static_cast<std::int64_t>(in.number("afdmp", "phase_steps"));
+    earlier_wall_seconds_ = in.number("afdmp", "wall_seconds");
+    machine_.restore(in);
+    audit_.restore(in);
+    gauges_.restore(in);
+  }
+
   /// One step of the current phase from t to t_next.
   void step(double t, double t_next, std::int64_t n) {
     observation_ = Observation{};
@@ -508,6 +645,7 @@ class AfdmpLoop {
   }
 
   const config::Scene& scene_;
+  const std::string& scene_text_;
   const AfdmpLayout& layout_;
   AuditOutflow outflow_;
   AfdmpStart start_;
@@ -538,6 +676,9 @@ class AfdmpLoop {
   std::int64_t phase_steps_ = 0;
   Clock::time_point phase_start_;
   CoupledRunReport report_;
+  double earlier_wall_seconds_ = 0;  ///< a restarted run's wall time up to its checkpoint
+  nlohmann::json checkpoints_;       ///< summary.json details.checkpoints
+  bool summary_ready_ = !options_.restart;
 };
 
 }  // namespace
@@ -560,7 +701,8 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kAfdmpPeers);
-    AfdmpLoop loop(scene, layout, outflow, material_import, hub, summary, options);
+    if (options.restart) restore_solvers(hub, *options.restart, options.handoff_timeout);
+    AfdmpLoop loop(scene, scene_text, layout, outflow, material_import, hub, summary, options);
     try {
       const CoupledRunReport report = loop.run();
       retired = loop.retired();
@@ -568,7 +710,7 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
     } catch (...) {
       retired = loop.retired();
       try {
-        loop.record_summary("failed", 0);
+        if (loop.summary_ready()) loop.record_summary("failed", 0);
       } catch (const std::exception&) {
         // The run's own error is the one to report; run_session writes the summary's status.
       }

@@ -46,6 +46,12 @@ struct Totals {
   double energy = 0;
 };
 
+/// A Totals as "/<owner>/<name>" of a coupled checkpoint ([mass, px, py, pz, E]), and back.
+void save_totals(RestartWriter& out, const std::string& owner, const std::string& name,
+                 const Totals& totals);
+[[nodiscard]] Totals restored_totals(const RestartReader& in, const std::string& owner,
+                                     const std::string& name);
+
 /// What the solvers' Hello capabilities offer beyond protocol v1.0 (proto §14).
 struct SolverFeatures {
   bool fdm_face_crossing = false;  ///< fdm exports `coupling_face` (crossed_*): exact parcels

@@ -99,29 +99,6 @@ std::vector<cosim::Message> setups(const config::Scene& scene, const std::string
   return messages;
 }
 
-/// Restore of each solver's checkpoint of `from` (a zone asleep then has none: its
-/// Setup state is the one it had).
-void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,
-                     std::chrono::milliseconds timeout) {
-  for (const auto& [peer, file] : {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}}) {
-    if (!file) continue;
-    cosim::Message message;
-    message.header.mutable_restore()->set_path(file->path);
-    message.header.mutable_restore()->set_step(file->step);
-    hub.send(peer, std::move(message));
-    const auto reply = hub.receive_from(peer, timeout);
-    if (!reply.header.has_restored())
-      throw Error("solver '" + std::string(peer) + "' answered Restore with '" +
-                  std::string(cosim::body_name(reply.header)) + "'");
-    if (reply.header.restored().step() != file->step)
-      throw Error("solver '" + std::string(peer) + "' restored '" + file->path + "' at step " +
-                  std::to_string(reply.header.restored().step()) + "; the coupler checkpoint '" +
-                  from.file.string() + "' names step " + std::to_string(file->step));
-    Logger("coupler").info("solver '", peer, "' restored '", file->path, "' (step ", file->step,
-                           ", t = ", reply.header.restored().time(), " s)");
-  }
-}
-
 Totals sum(std::initializer_list<Totals> parts) {
   Totals t;
   for (const Totals& part : parts) {
@@ -158,7 +135,8 @@ class Loop {
         scene_text_(scene_text),
         step_(scene, layout, features),
         watch_(scene.zones->mpm->activation_pressure),
-        gauges_(scene, options.out_dir),
+        gauges_(scene, options.out_dir,
+                options.restart ? io::GaugeStart::restart : io::GaugeStart::fresh),
         hub_(hub),
         summary_(summary),
         options_(options) {
@@ -219,6 +197,9 @@ class Loop {
   }
 
   [[nodiscard]] std::string face_drain_text() const { return step_.face_drain_text(); }
+  /// False while a restart has not yet restored the run: its summary would hold nothing
+  /// yet and must not replace the stopped run's files (gauges.h5 among them).
+  [[nodiscard]] bool summary_ready() const { return summary_ready_; }
 
   void record_summary(const std::string& status, double wall) {
     const Totals now = current();
@@ -288,12 +269,21 @@ class Loop {
   Position resume(const CouplerCheckpoint& from) {
     {
       const io::Hdf5File file(from.file, io::Hdf5File::Mode::read);
-      restore(RestartReader(file));
+      const RestartReader in(file);
+      restore(in);
+      if (from.mpm.has_value() == watch_.dormant())
+        in.refuse(std::string(watch_.dormant() ? "names an MPM checkpoint for a sleeping zone"
+                                               : "names no MPM checkpoint for an awake zone") +
+                  " (attribute mpm_path, group /activation)");
     }
+    report_.steps = from.step;
+    report_.time = from.time;
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
     exchange({.advance = false, .time = from.time, .audit = true});
+    summary_ready_ = true;
     checkpoints_["restarted_from"] = {
         {"file", from.file.string()}, {"step", from.step}, {"time_s", from.time}};
+    checkpoints_["last"] = checkpoints_["restarted_from"];
     Logger("coupler").info("restarted from ", from.file.string(), ": step ", from.step,
                            ", t = ", from.time, " s, ", from.outputs, " outputs written");
     return {.time = from.time, .step = from.step, .outputs = from.outputs};
@@ -317,7 +307,7 @@ class Loop {
     std::filesystem::create_directories(at.file.parent_path());
     io::write_path_atomically(at.file, [&](const std::filesystem::path& partial) {
       io::Hdf5File file(partial, io::Hdf5File::Mode::create);
-      write_checkpoint_header(file, at, scene_text_, Dim);
+      write_checkpoint_header(file, at, scene_text_, grid_dimension(scene_));
       RestartWriter out(file);
       save(out, wall);
     });
@@ -327,51 +317,50 @@ class Loop {
   }
 
   void save(RestartWriter& out, double wall) const {
-    const auto totals = [&](const char* name, const Totals& t) {
-      out.array(
-          "loop", name,
-          std::array<double, 5>{t.mass, t.momentum[0], t.momentum[1], t.momentum[2], t.energy});
-    };
-    totals("initial", initial_);
-    totals("switch", switch_);
+    save_totals(out, "loop", "initial", initial_);
+    save_totals(out, "loop", "switch", switch_);
     out.text("loop", "audit_switch", audit_switch_.dump());
-    out.array("loop", "counts",
-              std::array<double, 8>{
-                  double(injected_), double(removed_), double(discarded_), injected_mass_,
-                  deposited_mass_, double(report_.steps_limited_by_fdm),
-                  double(report_.steps_limited_by_mpm), double(report_.steps_limited_by_strip)});
-    out.array("loop", "seconds",
-              std::array<double, 5>{wall, step_seconds_, report_.fdm_advance_seconds,
-                                    report_.mpm_advance_seconds, report_.max_advance_seconds});
-    out.number("loop", "mpm_slower", mpm_slower_ ? 1 : 0);
+    const std::pair<const char*, double> numbers[] = {
+        {"injected_particles", static_cast<double>(injected_)},
+        {"removed_particles", static_cast<double>(removed_)},
+        {"discarded_particles", static_cast<double>(discarded_)},
+        {"injected_mass", injected_mass_},
+        {"deposited_mass", deposited_mass_},
+        {"steps_limited_by_fdm", static_cast<double>(report_.steps_limited_by_fdm)},
+        {"steps_limited_by_mpm", static_cast<double>(report_.steps_limited_by_mpm)},
+        {"steps_limited_by_strip", static_cast<double>(report_.steps_limited_by_strip)},
+        {"wall_seconds", wall},
+        {"step_seconds", step_seconds_},
+        {"fdm_advance_seconds", report_.fdm_advance_seconds},
+        {"mpm_advance_seconds", report_.mpm_advance_seconds},
+        {"slower_advance_seconds", report_.max_advance_seconds},
+        {"mpm_slower", mpm_slower_ ? 1.0 : 0.0}};
+    for (const auto& [name, value] : numbers) out.number("loop", name, value);
     step_.save(out);
     watch_.save(out);
     gauges_.save(out);
   }
 
   void restore(const RestartReader& in) {
-    const auto totals = [&](const char* name) {
-      const auto v = in.array("loop", name, 5);
-      return Totals{.mass = v[0], .momentum = {v[1], v[2], v[3]}, .energy = v[4]};
+    const auto count = [&](const char* name) {
+      return static_cast<std::uint64_t>(in.number("loop", name));
     };
-    initial_ = totals("initial");
-    switch_ = totals("switch");
-    audit_switch_ = nlohmann::json::parse(in.text("loop", "audit_switch"));
-    const auto counts = in.array("loop", "counts", 8);
-    injected_ = static_cast<std::uint64_t>(counts[0]);
-    removed_ = static_cast<std::uint64_t>(counts[1]);
-    discarded_ = static_cast<std::uint64_t>(counts[2]);
-    injected_mass_ = counts[3];
-    deposited_mass_ = counts[4];
-    report_.steps_limited_by_fdm = static_cast<std::int64_t>(counts[5]);
-    report_.steps_limited_by_mpm = static_cast<std::int64_t>(counts[6]);
-    report_.steps_limited_by_strip = static_cast<std::int64_t>(counts[7]);
-    const auto seconds = in.array("loop", "seconds", 5);
-    earlier_wall_seconds_ = seconds[0];
-    step_seconds_ = seconds[1];
-    report_.fdm_advance_seconds = seconds[2];
-    report_.mpm_advance_seconds = seconds[3];
-    report_.max_advance_seconds = seconds[4];
+    initial_ = restored_totals(in, "loop", "initial");
+    switch_ = restored_totals(in, "loop", "switch");
+    audit_switch_ = in.json("loop", "audit_switch");
+    injected_ = count("injected_particles");
+    removed_ = count("removed_particles");
+    discarded_ = count("discarded_particles");
+    injected_mass_ = in.number("loop", "injected_mass");
+    deposited_mass_ = in.number("loop", "deposited_mass");
+    report_.steps_limited_by_fdm = static_cast<std::int64_t>(count("steps_limited_by_fdm"));
+    report_.steps_limited_by_mpm = static_cast<std::int64_t>(count("steps_limited_by_mpm"));
+    report_.steps_limited_by_strip = static_cast<std::int64_t>(count("steps_limited_by_strip"));
+    earlier_wall_seconds_ = in.number("loop", "wall_seconds");
+    step_seconds_ = in.number("loop", "step_seconds");
+    report_.fdm_advance_seconds = in.number("loop", "fdm_advance_seconds");
+    report_.mpm_advance_seconds = in.number("loop", "mpm_advance_seconds");
+    report_.max_advance_seconds = in.number("loop", "slower_advance_seconds");
     mpm_slower_ = in.number("loop", "mpm_slower") != 0;
     step_.restore(in);
     watch_.restore(in);
@@ -504,8 +493,9 @@ class Loop {
   CoupledRunReport report_;
   double step_seconds_ = 0;
   double earlier_wall_seconds_ = 0;  ///< a restarted run's wall time up to its checkpoint
-  nlohmann::json checkpoints_;       ///< summary.json details.checkpoints
-  bool mpm_slower_ = false;          ///< the MPM's last Advance took longer than the FDM's
+  bool summary_ready_ = !options_.restart;
+  nlohmann::json checkpoints_;  ///< summary.json details.checkpoints
+  bool mpm_slower_ = false;     ///< the MPM's last Advance took longer than the FDM's
   std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
   double injected_mass_ = 0, deposited_mass_ = 0;
 };
@@ -516,6 +506,7 @@ CoupledRunReport run_loop(const config::Scene& scene, const std::string& scene_t
                           io::RunSummary& summary, const CoupledRunOptions& options) {
   Loop<Dim> loop(scene, scene_text, layout, features, hub, summary, options);
   const auto record_failure = [&loop] {
+    if (!loop.summary_ready()) return;
     try {
       loop.record_summary("failed", 0);
     } catch (const std::exception&) {

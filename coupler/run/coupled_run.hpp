@@ -36,9 +36,9 @@ struct CoupledRunOptions {
   /// chunk or commit may take (a whole-field commit can outlast a step's reply timeout).
   std::uint64_t max_chunk_bytes = cosim::kDefaultMaxChunkBytes;
   std::chrono::milliseconds handoff_timeout{300000};
-  /// CFDMP: a checkpoint after every this many outputs (coupler_checkpoint.hpp); 0: none.
+  /// A checkpoint after every this many outputs (coupler_checkpoint.hpp); 0: none.
   int checkpoint_every = 0;
-  /// CFDMP: go on from this checkpoint of the run in out_dir (newest_checkpoint).
+  /// Go on from this checkpoint of the run in out_dir (newest_checkpoint).
   std::optional<CouplerCheckpoint> restart;
 };
 

@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "common/core/error.hpp"
+#include "common/core/log.hpp"
 #include "cosim/serving/sha256.hpp"
 
 namespace mpfd::coupler {
@@ -11,21 +12,38 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// `path` relative to `out_dir` when it lies in it: the run's folder may move between
+/// the checkpoint and the restart. A solver on another host keeps its own path.
+std::string portable(const std::string& path, const fs::path& out_dir) {
+  const fs::path relative = fs::path(path).lexically_relative(fs::absolute(out_dir));
+  const bool inside = !relative.empty() && *relative.begin() != "..";
+  return inside && fs::path(path).is_absolute() ? relative.string() : path;
+}
+
 void write_solver(io::Hdf5File& file, const std::string& name,
-                  const std::optional<SolverCheckpoint>& solver) {
-  file.write_attribute("/", name + "_path", solver ? solver->path : std::string());
+                  const std::optional<SolverCheckpoint>& solver, const fs::path& out_dir) {
+  file.write_attribute("/", name + "_path",
+                       solver ? portable(solver->path, out_dir) : std::string());
   file.write_attribute("/", name + "_step",
                        static_cast<std::int64_t>(solver ? solver->step : std::uint64_t{0}));
 }
 
-std::optional<SolverCheckpoint> read_solver(const io::Hdf5File& file, const std::string& name) {
-  const std::string path = file.read_string_attribute("/", name + "_path");
+std::optional<SolverCheckpoint> read_solver(const io::Hdf5File& file, const std::string& name,
+                                            const fs::path& out_dir) {
+  std::string path = file.read_string_attribute("/", name + "_path");
   if (path.empty()) return std::nullopt;
+  if (fs::path(path).is_relative()) path = (fs::absolute(out_dir) / path).string();
   return SolverCheckpoint{path,
                           static_cast<std::uint64_t>(file.read_attribute("/", name + "_step"))};
 }
 
 }  // namespace
+
+int grid_dimension(const config::Scene& scene) {
+  int dimension = 0;
+  for (const int cells : scene.domain.cells) dimension += cells > 1 ? 1 : 0;
+  return dimension;
+}
 
 fs::path coupler_checkpoint_file(const fs::path& out_dir, std::int64_t step) {
   char name[40];
@@ -42,8 +60,9 @@ void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkp
   file.write_attribute("/", "step", checkpoint.step);
   file.write_attribute("/", "time", checkpoint.time);
   file.write_attribute("/", "outputs", std::int64_t{checkpoint.outputs});
-  write_solver(file, "fdm", checkpoint.fdm);
-  write_solver(file, "mpm", checkpoint.mpm);
+  const fs::path out_dir = checkpoint.file.parent_path().parent_path();  // <out>/checkpoints/
+  write_solver(file, "fdm", checkpoint.fdm, out_dir);
+  write_solver(file, "mpm", checkpoint.mpm, out_dir);
 }
 
 CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& scene_text,
@@ -94,10 +113,32 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
                                .step = static_cast<std::int64_t>(file.read_attribute("/", "step")),
                                .time = file.read_attribute("/", "time"),
                                .outputs = static_cast<int>(file.read_attribute("/", "outputs")),
-                               .fdm = read_solver(file, "fdm"),
-                               .mpm = read_solver(file, "mpm")};
-  if (!checkpoint.fdm) refuse("names no FDM checkpoint (attribute fdm_path)");
+                               .fdm = read_solver(file, "fdm", out_dir),
+                               .mpm = read_solver(file, "mpm", out_dir)};
+  if (!checkpoint.fdm && !checkpoint.mpm)
+    refuse("names no solver checkpoint (attributes fdm_path and mpm_path are empty)");
   return checkpoint;
+}
+
+void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,
+                     std::chrono::milliseconds timeout) {
+  for (const auto& [peer, file] : {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}}) {
+    if (!file) continue;
+    cosim::Message message;
+    message.header.mutable_restore()->set_path(file->path);
+    message.header.mutable_restore()->set_step(file->step);
+    hub.send(peer, std::move(message));
+    const auto reply = hub.receive_from(peer, timeout);
+    if (!reply.header.has_restored())
+      throw Error("solver '" + std::string(peer) + "' answered Restore with '" +
+                  std::string(cosim::body_name(reply.header)) + "'");
+    if (reply.header.restored().step() != file->step)
+      throw Error("solver '" + std::string(peer) + "' restored '" + file->path + "' at step " +
+                  std::to_string(reply.header.restored().step()) + "; the coupler checkpoint '" +
+                  from.file.string() + "' names step " + std::to_string(file->step));
+    Logger("coupler").info("solver '", peer, "' restored '", file->path, "' (step ", file->step,
+                           ", t = ", reply.header.restored().time(), " s)");
+  }
 }
 
 }  // namespace mpfd::coupler

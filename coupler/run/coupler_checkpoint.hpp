@@ -1,9 +1,10 @@
 #pragma once
-// A coupled CFDMP run's checkpoint (`coupler run --checkpoint-every K`,
-// docs/coupler.md "Checkpoint and restart"). After every K-th output's
-// exchange, when neither solver holds a half-done step, the coupler asks each
-// awake solver for its own checkpoint (proto/README.md §8; a sleeping MPM zone
-// is still its Setup's state) and then writes its own state to
+// A coupled run's checkpoint (`coupler run --checkpoint-every K`,
+// docs/coupler.md "Checkpoint and restart"). After every K-th output (CFDMP:
+// after its exchange, when neither solver holds a half-done step; AFDMP: in
+// the FDM and FSI phases), the coupler asks each solver that holds state for
+// its own checkpoint (proto/README.md §8; a sleeping MPM zone is still its
+// Setup's state, a retired solver has none) and then writes its own state to
 // <out>/checkpoints/coupler_NNNNNN.h5 (NNNNNN = the coupled step), renamed into
 // place last: a coupler file names a complete set. `coupler run --restart`
 // continues from the newest one: Setup, Restore of each solver's file, the
@@ -12,15 +13,20 @@
 // The file: attributes `format` "mpfd-coupler-checkpoint", `format_version`,
 // `scene_sha256` (of the scene text: a restart refuses another scene),
 // `dimension`, `step`, `time` [s], `outputs` (written so far), and per solver
-// `<name>_path`, `<name>_step` ("" and 0 for a sleeping zone); then the groups
-// of restart_file.hpp ("/loop", "/step", "/gauges", "/activation").
+// `<name>_path` (relative to the output folder when it lies in it, so the folder
+// may move), `<name>_step` ("" and 0 for a sleeping zone); then the groups
+// of restart_file.hpp (CFDMP: "/loop", "/step", "/gauges", "/activation";
+// AFDMP: "/afdmp", "/audit", "/phases", "/gauges", "/activation").
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "common/config/scene.hpp"
 #include "common/io/hdf5_file.hpp"
+#include "cosim/hub.hpp"
 
 namespace mpfd::coupler {
 
@@ -42,11 +48,15 @@ struct CouplerCheckpoint {
   std::optional<SolverCheckpoint> fdm{}, mpm{};  ///< none: the solver was asleep
 };
 
+/// The axes with more than one cell (a checkpoint's `dimension`).
+[[nodiscard]] int grid_dimension(const config::Scene& scene);
+
 /// <out_dir>/checkpoints/coupler_NNNNNN.h5 of `step`.
 [[nodiscard]] std::filesystem::path coupler_checkpoint_file(const std::filesystem::path& out_dir,
                                                             std::int64_t step);
 
-/// Writes the header of `checkpoint` for the scene text `scene_text` of `dimension`.
+/// Writes the header of `checkpoint` (its `file` in <out>/checkpoints/) for the scene
+/// text `scene_text` of `dimension`.
 void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkpoint,
                              const std::string& scene_text, int dimension);
 
@@ -55,5 +65,11 @@ void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkp
 /// and the attribute when it was written for another scene or format.
 [[nodiscard]] CouplerCheckpoint newest_checkpoint(const std::filesystem::path& out_dir,
                                                   const std::string& scene_text, int dimension);
+
+/// Sends each solver that has a file in `from` its Restore and checks the Restored step
+/// (a zone that slept, or had been retired, has none: it stays as Setup made it). Waits
+/// `timeout` for each (a large grid takes longer than a step's reply). Throws mpfd::Error.
+void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,
+                     std::chrono::milliseconds timeout);
 
 }  // namespace mpfd::coupler

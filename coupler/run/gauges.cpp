@@ -38,7 +38,8 @@ std::string gauge_owner(const config::Scene& scene, const config::Gauge& gauge) 
               "zone that owns it");
 }
 
-CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::path& out_dir)
+CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::path& out_dir,
+                             io::GaugeStart start)
     : scene_(scene) {
   // The names each solver's SampleGauges knows (fdm_solver/serve, mpm_solver/serve).
   fdm_ = {"fdm", {}, {"rho", "pressure", "velocity_x", "velocity_y", "velocity_z"}};
@@ -74,7 +75,7 @@ CoupledGauges::CoupledGauges(const config::Scene& scene, const std::filesystem::
                                           {"velocity_z", "m/s"}};
   if (structures) recorded.push_back({"mises_stress", "Pa"});
   for (const char* name : kPositionNames) recorded.push_back({name, "m"});
-  recorder_.emplace(out_dir, std::move(points), std::move(recorded));
+  recorder_.emplace(out_dir, std::move(points), std::move(recorded), start);
   // Room for the samples up front, so recording does not allocate while stepping.
   if (interval)
     recorder_->reserve(static_cast<std::size_t>(

@@ -45,8 +45,9 @@ enum class GaugeSamplers {
 
 class CoupledGauges {
  public:
-  /// Opens <out_dir>/gauges.csv when the scene has gauges.
-  CoupledGauges(const config::Scene& scene, const std::filesystem::path& out_dir);
+  /// Opens <out_dir>/gauges.csv when the scene has gauges (a restarted run's in restore()).
+  CoupledGauges(const config::Scene& scene, const std::filesystem::path& out_dir,
+                io::GaugeStart start = io::GaugeStart::fresh);
 
   /// Appends SampleGauges to the requests of a step that ends at `time` [s] when a
   /// sample is due then (every step, or every output.gauge_interval); a request

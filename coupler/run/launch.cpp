@@ -91,10 +91,6 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
     fdm_program = program(launch.fdm_program, self, "fdm_solver");
     mpm_program = program(launch.mpm_program, self, "mpm_solver");
   }
-  if (afdmp && (options.checkpoint_every > 0 || launch.restart))
-    throw Error("--checkpoint-every and --restart take cfdmp scenes; '" + scene_file.string() +
-                "' has solver.method afdmp, whose phases the coupler cannot checkpoint yet "
-                "(docs/coupler.md, Checkpoint and restart)");
   if (options.checkpoint_every < 0)
     throw Error("--checkpoint-every " + std::to_string(options.checkpoint_every) +
                 ": expected a count of outputs >= 0 (0: none)");
@@ -103,7 +99,7 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
       throw Error(
           "--restart goes on with the run in --out; --overwrite would start a new one "
           "there: give one of the two");
-    options.restart = newest_checkpoint(options.out_dir, text, make_zone_layout(scene).dimension);
+    options.restart = newest_checkpoint(options.out_dir, text, grid_dimension(scene));
   } else {
     io::prepare_output_directory(options.out_dir, launch.overwrite);
   }
@@ -132,15 +128,21 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
   const double handoff_seconds = std::chrono::duration<double>(options.handoff_timeout).count();
   const std::string idle =
       std::to_string(std::max({10.0, 4 * launch.timeout_seconds, handoff_seconds}));
+  // A restart keeps the stopped run's logs, which may say why it stopped.
+  const auto log = [&](const std::string& program) {
+    const std::string restart =
+        options.restart ? "_restart_" + std::to_string(options.restart->step) : "";
+    return (options.out_dir / (program + restart + ".log")).string();
+  };
   if (launch.mode == LaunchMode::processes) {
     solvers.push_back(start_process(
         "fdm",
         {fdm_program.string(), "serve", "--endpoint", connect.at("fdm"), "--idle-timeout", idle},
-        (options.out_dir / "fdm_solver.log").string()));
+        log("fdm_solver")));
     solvers.push_back(start_process(
         "mpm",
         {mpm_program.string(), "serve", "--endpoint", connect.at("mpm"), "--idle-timeout", idle},
-        (options.out_dir / "mpm_solver.log").string()));
+        log("mpm_solver")));
   } else if (launch.mode == LaunchMode::embedded) {
     solvers.push_back(start_thread("fdm", serve_fdm, context, connect.at("fdm")));
     solvers.push_back(start_thread("mpm", serve_mpm, context, connect.at("mpm")));

@@ -23,7 +23,7 @@ struct LaunchOptions {
   std::filesystem::path fdm_program;  ///< for processes; empty: beside the coupler
   std::filesystem::path mpm_program;
   bool overwrite = false;
-  /// Go on with the run in the output folder from its newest checkpoint (cfdmp).
+  /// Go on with the run in the output folder from its newest checkpoint.
   bool restart = false;
 };
 

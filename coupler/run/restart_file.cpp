@@ -22,14 +22,16 @@ void RestartWriter::array(const std::string& owner, const std::string& name,
 void RestartWriter::text(const std::string& owner, const std::string& name,
                          const std::string& value) {
   make_group(owner);
-  file_.write_attribute("/" + owner, name, value);
+  file_.write_text("/" + owner + "/" + name, value);  // a dataset: records grow with the run
 }
 
 double RestartReader::number(const std::string& owner, const std::string& name) const {
+  if (!file_.exists("/" + owner))
+    refuse("has no group '/" + owner + "' (a coupler checkpoint has it)");
   try {
     return file_.read_attribute("/" + owner, name);
-  } catch (const std::exception&) {
-    refuse("has no number '" + name + "' in '/" + owner + "' (a coupler checkpoint has it)");
+  } catch (const std::exception& error) {
+    refuse("has no number '" + name + "' on '/" + owner + "': " + error.what());
   }
 }
 
@@ -45,10 +47,16 @@ std::vector<double> RestartReader::array(const std::string& owner, const std::st
 }
 
 std::string RestartReader::text(const std::string& owner, const std::string& name) const {
+  const std::string path = "/" + owner + "/" + name;
+  if (!file_.exists(path)) refuse("has no text '" + path + "' (a coupler checkpoint has it)");
+  return file_.read_text(path);
+}
+
+nlohmann::json RestartReader::json(const std::string& owner, const std::string& name) const {
   try {
-    return file_.read_string_attribute("/" + owner, name);
-  } catch (const std::exception&) {
-    refuse("has no text '" + name + "' in '/" + owner + "' (a coupler checkpoint has it)");
+    return nlohmann::json::parse(text(owner, name));
+  } catch (const nlohmann::json::exception& error) {
+    refuse("holds no JSON in '/" + owner + "/" + name + "': " + error.what());
   }
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 // The coupler's own part of a coupled checkpoint (coupler/run/coupler_checkpoint.hpp):
-// named numbers and arrays in an HDF5 file, "/<owner>/<name>" (a number is an
-// attribute of the owner's group, an array a dataset in it), read back with
-// errors that name the file and the entry.
+// named numbers, arrays and texts in an HDF5 file, "/<owner>/<name>" (a number
+// is an attribute of the owner's group, an array or a text a dataset in it: the
+// records grow with the run), read back with errors that name the file and the entry.
 
 #include <cstddef>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,6 +40,8 @@ class RestartReader {
   [[nodiscard]] std::vector<double> array(const std::string& owner, const std::string& name,
                                           std::size_t count = kAnyCount) const;
   [[nodiscard]] std::string text(const std::string& owner, const std::string& name) const;
+  /// The text "/<owner>/<name>" parsed as JSON.
+  [[nodiscard]] nlohmann::json json(const std::string& owner, const std::string& name) const;
   /// Throws mpfd::Error "restart: '<file>' <what>".
   [[noreturn]] void refuse(const std::string& what) const;
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/core/log.hpp"
+#include "common/io/snapshot_writer.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "cosim/serving/sha256.hpp"
 #include "fdm_solver/serve/checkpoint_file.hpp"
@@ -108,6 +109,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
   try {
     verify_digest(file);
     CheckpointContents back = read_checkpoint_file(file, zone, request.step());
+    io::SnapshotWriter::check_history(back.snapshot_history);  // before anything changes
     if (back.scene_text != zone.scene_text)
       Logger("fdm.serve")
           .warn("Restore: '", file.string(),

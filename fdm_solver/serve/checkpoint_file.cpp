@@ -84,7 +84,7 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
   cosim::write_checkpoint_clock(
       h5, {solver.steps(), solver.time(), zone.start_time, zone.setup_start_time});
   h5.write_attribute("/", "scene", zone.scene_text);
-  h5.write_attribute("/", "snapshots", zone.output.history());
+  h5.write_text("/snapshots", zone.output.history());  // grows with the outputs: a dataset
   h5.write_attribute("/", "material_count", static_cast<std::int64_t>(zone.scene.materials.size()));
   h5.write_attribute("/", "material_names", material_names(zone.scene));
   h5.create_group("/grid");
@@ -152,7 +152,7 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
 
   back.clock = cosim::read_checkpoint_clock(in, step, zone.setup_start_time);
   back.scene_text = h5.read_string_attribute("/", "scene");
-  back.snapshot_history = h5.read_string_attribute("/", "snapshots");
+  back.snapshot_history = h5.read_text("/snapshots");
   return back;
 }
 

@@ -74,15 +74,9 @@ std::string SnapshotOutput::history() const {
 }
 
 void SnapshotOutput::resume(const std::string& history, const grid::UniformGrid& grid) {
-  if (out_dir_.empty() || (history == "[]" && !writer_)) return;
-  try {
-    if (!writer_) writer_.emplace(out_dir_, grid);
-    writer_->resume(history);
-  } catch (const std::exception& error) {
-    throw cosim::ProtocolError(cosim::v1::ERROR_CODE_IO, "Restore: the snapshot series into '" +
-                                                             out_dir_.string() +
-                                                             "' cannot go on: " + error.what());
-  }
+  if (out_dir_.empty() || (io::SnapshotWriter::empty_history(history) && !writer_)) return;
+  if (!writer_) writer_.emplace(out_dir_, grid);
+  writer_->resume(history);
 }
 
 }  // namespace mpfd::fdm

@@ -36,7 +36,7 @@ class SnapshotOutput {
   [[nodiscard]] std::string history() const;
   /// Continues a checkpoint's series `history` in out_dir (io::SnapshotWriter::resume), so
   /// that a restored run numbers its snapshots on (from 0 again for a checkpoint taken
-  /// before the first). Nothing without an out_dir. Throws cosim::ProtocolError{IO}.
+  /// before the first). Nothing without an out_dir. Throws mpfd::Error.
   void resume(const std::string& history, const grid::UniformGrid& grid);
 
  private:

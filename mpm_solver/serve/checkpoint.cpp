@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/core/log.hpp"
+#include "common/io/snapshot_writer.hpp"
 #include "cosim/serving/protocol_error.hpp"
 #include "cosim/serving/sha256.hpp"
 #include "mpm_solver/serve/checkpoint_file.hpp"
@@ -114,6 +115,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
   try {
     verify_digest(file);
     CheckpointContents back = read_checkpoint_file(file, zone, request.step());
+    io::SnapshotWriter::check_history(back.snapshot_history);  // before anything changes
     if (back.scene_text != zone.scene_text)
       Logger("mpm.serve")
           .warn("Restore: '", file.string(),
@@ -133,7 +135,8 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     zone.start_time = back.clock.start_time;
     zone.dormant = false;
     // The restored run numbers its snapshots on (from 0 again for a checkpoint before the first).
-    if (!zone.output_dir.empty() && (zone.snapshots || back.snapshot_history != "[]")) {
+    if (!zone.output_dir.empty() &&
+        (zone.snapshots || !io::SnapshotWriter::empty_history(back.snapshot_history))) {
       if (!zone.snapshots) {
         std::filesystem::create_directories(zone.output_dir);
         zone.snapshots.emplace(zone.output_dir, zone.solver.grid());

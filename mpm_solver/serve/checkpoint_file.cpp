@@ -58,7 +58,8 @@ void write_checkpoint_file(const std::filesystem::path& file, const ServedZone& 
       h5, {solver.steps(), solver.time(), zone.start_time, zone.setup_start_time});
   h5.write_attribute("/", "particle_updates", solver.particle_updates());
   h5.write_attribute("/", "scene", zone.scene_text);
-  h5.write_attribute("/", "snapshots", zone.snapshots ? zone.snapshots->history() : "[]");
+  h5.write_text("/snapshots", zone.snapshots ? zone.snapshots->history()
+                                             : "[]");  // grows with the outputs: a dataset
   h5.write_attribute("/", "material_names", material_names(zone.scene));
   h5.write_attribute("/", "particle_count", static_cast<std::int64_t>(n));
   h5.write_attribute("/", "history_stride", static_cast<std::int64_t>(ps.history_stride));
@@ -139,7 +140,7 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file, const
   back.clock = cosim::read_checkpoint_clock(in, step, zone.setup_start_time);
   back.particle_updates = h5.read_attribute("/", "particle_updates");
   back.scene_text = h5.read_string_attribute("/", "scene");
-  back.snapshot_history = h5.read_string_attribute("/", "snapshots");
+  back.snapshot_history = h5.read_text("/snapshots");
   if (h5.exists("/next_step_map_box")) {  // absent: no map, or a checkpoint from before maps
     const auto corners = in.values("/next_step_map_box", 6, "grid node lo, hi");
     std::array<grid::Index3, 2> box{};

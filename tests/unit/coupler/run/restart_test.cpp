@@ -1,8 +1,9 @@
-// Checkpoint and restart of a coupled CFDMP run (coupler/run/coupler_checkpoint.hpp)
-// with the real solvers on threads: a run restarted from a checkpoint ends bit for
-// bit as the run that was never stopped (gauges, audit, both solvers' last
-// snapshots and the snapshot series), checkpointing does not change a run, and a
-// restart that cannot be made is refused before anything in the folder changes.
+// Checkpoint and restart of coupled CFDMP and AFDMP runs
+// (coupler/run/coupler_checkpoint.hpp) with the real solvers on threads: a run
+// restarted from a checkpoint ends bit for bit as the run that was never stopped
+// (gauges, audit, handoffs, every snapshot and the snapshot series),
+// checkpointing does not change a run, and a restart that cannot be made is
+// refused before anything in the folder changes.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -86,52 +87,113 @@ void expect_same_values(const std::vector<double>& a, const std::vector<double>&
   EXPECT_EQ(differ, 0u) << what << ": " << differ << " of " << a.size() << " values differ";
 }
 
-/// The two runs' gauges, audit and last snapshots are the same.
-/// `fdm_last`, `mpm_last`: each solver's last snapshot (a zone asleep writes none).
-void expect_same_run(const fs::path& a, const fs::path& b, const std::string& fdm_last,
-                     const std::string& mpm_last) {
+/// The snapshot files of <dir>/<solver>/snapshots, by name.
+std::vector<std::string> snapshots(const fs::path& dir, const std::string& solver) {
+  std::vector<std::string> names;
+  const fs::path folder = dir / solver / "snapshots";
+  if (fs::is_directory(folder))
+    for (const auto& entry : fs::directory_iterator(folder))
+      names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// The two runs' gauges, audit, snapshots and snapshot series are the same.
+void expect_same_run(const fs::path& a, const fs::path& b) {
   expect_same_values(dataset(a / "gauges.h5", "/time"), dataset(b / "gauges.h5", "/time"),
                      "gauge times");
-  for (const char* gauge : {"p1_fdm", "p2_mpm"})
+  const auto scene_gauges =
+      nlohmann::json::parse(read_text(a / "summary.json"))["details"]["gauges"];
+  ASSERT_FALSE(scene_gauges.empty());
+  for (const auto& gauge : scene_gauges)
     for (const char* q : {"pressure", "density", "velocity_x", "position_x"}) {
-      const std::string path = std::string("/gauges/") + gauge + "/" + q;
+      const std::string path = "/gauges/" + gauge["name"].get<std::string>() + "/" + q;
       expect_same_values(dataset(a / "gauges.h5", path), dataset(b / "gauges.h5", path), path);
     }
   EXPECT_EQ(read_text(a / "gauges.csv"), read_text(b / "gauges.csv"));
-  const auto summary = [](const fs::path& dir) {
-    std::ifstream in(dir / "summary.json");
-    return nlohmann::json::parse(in);
-  };
-  const auto sa = summary(a), sb = summary(b);
+  const auto sa = nlohmann::json::parse(read_text(a / "summary.json"));
+  const auto sb = nlohmann::json::parse(read_text(b / "summary.json"));
   EXPECT_EQ(sa["conservation"], sb["conservation"]);
-  EXPECT_EQ(sa["details"]["zones"], sb["details"]["zones"]);
-  EXPECT_EQ(sa["details"]["crossing"], sb["details"]["crossing"]);
-  EXPECT_EQ(sa["details"]["activation"], sb["details"]["activation"]);
   EXPECT_EQ(sa["steps"], sb["steps"]);
-  const fs::path fdm = fs::path("fdm") / "snapshots" / fdm_last;
-  const fs::path mpm = fs::path("mpm") / "snapshots" / mpm_last;
-  expect_same_values(dataset(a / fdm, "/cells/pressure"), dataset(b / fdm, "/cells/pressure"),
-                     "fdm pressure");
-  expect_same_values(dataset(a / mpm, "/particles/position"),
-                     dataset(b / mpm, "/particles/position"), "mpm positions");
+  for (const char* detail : {"zones", "crossing", "activation"})  // CFDMP's
+    EXPECT_EQ(sa["details"].value(detail, nlohmann::json()),
+              sb["details"].value(detail, nlohmann::json()))
+        << detail;
+  if (sa["details"].contains("afdmp")) {  // the handoffs but for their wall times
+    auto ha = sa["details"]["afdmp"]["handoffs"], hb = sb["details"]["afdmp"]["handoffs"];
+    for (auto* list : {&ha, &hb})
+      for (auto& handoff : *list) handoff.erase("wall_s");
+    EXPECT_EQ(ha, hb);
+    EXPECT_EQ(sa["details"]["afdmp"]["audit"], sb["details"]["afdmp"]["audit"]);
+  }
+  for (const auto& [solver, field] :
+       {std::pair{"fdm", "/cells/pressure"}, std::pair{"mpm", "/particles/position"}}) {
+    const auto names = snapshots(a, solver);
+    ASSERT_EQ(names, snapshots(b, solver)) << solver;
+    for (const auto& name : names) {
+      const fs::path file = fs::path(solver) / "snapshots" / name;
+      expect_same_values(dataset(a / file, field), dataset(b / file, field), file.string());
+    }
+  }
   // The series goes on: every earlier output is listed, none from 0 again.
-  EXPECT_EQ(read_text(a / "fdm" / "cells.xmf"), read_text(b / "fdm" / "cells.xmf"));
-  EXPECT_EQ(read_text(a / "mpm" / "particles.xmf"), read_text(b / "mpm" / "particles.xmf"));
+  for (const char* series : {"fdm/cells.xmf", "mpm/particles.xmf"})
+    EXPECT_EQ(read_text(a / series), read_text(b / series)) << series;
 }
 
-/// A copy of run `from` whose newest checkpoint is the one of `step`; later ones removed.
-fs::path copy_back_to(const fs::path& from, const fs::path& to, std::int64_t step) {
+/// Every coupler checkpoint of the run in `out`, oldest first.
+std::vector<fs::path> checkpoints_of(const fs::path& out) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(out / "checkpoints"))
+    files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+/// A copy of the finished run `from` as a run stopped after its checkpoint `checkpoint`:
+/// later checkpoints (the coupler's and the solvers') and snapshots gone, the summary
+/// of a run still going, and a last gauges.csv row that the checkpoint does not hold.
+fs::path stopped_after(const fs::path& from, const fs::path& checkpoint, const fs::path& to) {
   fs::remove_all(to);
   fs::copy(from, to, fs::copy_options::recursive);
-  for (const auto& entry : fs::directory_iterator(to / "checkpoints")) {
-    const std::string name = entry.path().filename().string();
-    if (name > coupler_checkpoint_file(to, step).filename().string()) fs::remove(entry.path());
+  const io::Hdf5File header(checkpoint, io::Hdf5File::Mode::read);
+  const double time = header.read_attribute("/", "time");
+  for (const auto& file : checkpoints_of(to))
+    if (file.filename() > checkpoint.filename()) fs::remove(file);
+  for (const char* solver : {"fdm", "mpm"}) {
+    // checkpoint_NNNNNN.h5[.sha256] after the solver's step (none of a solver asleep or retired)
+    const std::string key = solver;
+    const fs::path solver_checkpoints = to / solver / "checkpoints";
+    if (!header.read_string_attribute("/", key + "_path").empty())
+      for (const auto& entry : fs::directory_iterator(solver_checkpoints))
+        if (std::stod(entry.path().filename().string().substr(11, 6)) >
+            header.read_attribute("/", key + "_step"))
+          fs::remove(entry.path());
+    for (const auto& name : snapshots(to, solver)) {
+      const fs::path file = to / solver / "snapshots" / name;
+      // A solver's clock may lie an ulp or two off the coupler's: after, not at, the checkpoint.
+      if (io::Hdf5File(file, io::Hdf5File::Mode::read).read_attribute("/", "time") >
+          time * (1 + 1e-9))
+        fs::remove(file);
+    }
   }
+  std::ofstream(to / "gauges.csv", std::ios::app) << "1.0,not,a,sample\n";
+  std::ofstream(to / "summary.json") << R"({"status": "running"})";
   return to;
 }
 
-std::int64_t checkpoint_step(const nlohmann::json& summary) {
-  return summary["details"]["checkpoints"]["last"]["step"].get<std::int64_t>();
+/// Restarts the run in <dir>/checkpointed, stopped after each of its checkpoints in
+/// turn, and expects each restart to end as the run that was never stopped.
+void restart_from_each(const fs::path& scene) {
+  const auto dir = scene.parent_path();
+  for (const auto& checkpoint : checkpoints_of(dir / "checkpointed")) {
+    SCOPED_TRACE("restarted from " + checkpoint.filename().string());
+    const auto restarted = stopped_after(dir / "checkpointed", checkpoint, dir / "restarted");
+    const auto summary = run(scene, restarted, {.restart = true, .overwrite = false});
+    EXPECT_EQ(summary["status"], "completed");
+    EXPECT_EQ(summary["details"]["checkpoints"]["restarted_from"]["file"],
+              (restarted / "checkpoints" / checkpoint.filename()).string());
+    expect_same_run(dir / "checkpointed", restarted);
+  }
 }
 
 TEST(CoupledRestart, A_run_restarted_from_its_checkpoint_ends_as_the_run_never_stopped) {
@@ -140,30 +202,28 @@ TEST(CoupledRestart, A_run_restarted_from_its_checkpoint_ends_as_the_run_never_s
   const auto straight = run(scene, dir / "straight", {});
   const auto checkpointed = run(scene, dir / "checkpointed", {.checkpoint_every = 2});
   ASSERT_EQ(checkpointed["status"], "completed");
-  // Outputs 1 ... 4 at 10 ... 40 us: checkpoints after outputs 2 (20 us); none at the end.
-  EXPECT_EQ(checkpointed["details"]["checkpoints"]["last"]["time_s"].get<double>(), 2.0e-5);
-  const std::int64_t step = checkpoint_step(checkpointed);
+  // Outputs 1 ... 4 at 10 ... 40 us: a checkpoint after output 2 (20 us), none at the end.
+  const auto files = checkpoints_of(dir / "checkpointed");
+  ASSERT_EQ(files.size(), 1u);
+  const io::Hdf5File header(files[0], io::Hdf5File::Mode::read);
+  EXPECT_EQ(header.read_attribute("/", "time"), 2.0e-5);
+  EXPECT_EQ(checkpointed["details"]["checkpoints"]["last"]["file"], files[0].string());
   EXPECT_TRUE(fs::exists(dir / "checkpointed" / "fdm" / "checkpoints"));
   EXPECT_TRUE(fs::exists(dir / "checkpointed" / "mpm" / "checkpoints"));
   // Checkpointing changes nothing in the run.
-  expect_same_run(dir / "straight", dir / "checkpointed", "snapshot_000004.h5",
-                  "snapshot_000004.h5");
-  EXPECT_EQ(straight["conservation"], checkpointed["conservation"]);
+  expect_same_run(dir / "straight", dir / "checkpointed");
 
-  // The run stopped after its checkpoint: later outputs and the summary say so,
-  // and the restart goes on from 20 us over them.
-  const auto restarted = copy_back_to(dir / "checkpointed", dir / "restarted", step);
-  const auto summary = run(scene, restarted, {.restart = true, .overwrite = false});
-  ASSERT_EQ(summary["status"], "completed");
-  EXPECT_EQ(summary["details"]["checkpoints"]["restarted_from"]["step"].get<std::int64_t>(), step);
-  EXPECT_GT(summary["details"]["crossing"]["injected_particles"].get<int>(), 20000);
-  expect_same_run(dir / "checkpointed", restarted, "snapshot_000004.h5", "snapshot_000004.h5");
+  restart_from_each(scene);
+  // Particles were injected on both sides of the checkpoint.
+  const double before = header.read_attribute("/loop", "injected_particles");
+  EXPECT_GT(before, 1000);
+  EXPECT_GT(checkpointed["details"]["crossing"]["injected_particles"].get<double>(), 2 * before);
 }
 
 TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited_as_before) {
   // configs/cfdmp_sod_1d.yaml mirrored: the dense gas in the MPM zone, x > 0.8, so the
   // flow leaves the zone through its face at x = 0.6 (particles removed and deposited,
-  // parcels returned). Checkpoints after outputs 3, 6, 9 (of 10); the restart from 3.
+  // parcels returned). Checkpoints after outputs 3, 6, 9 (of 10).
   const auto scene = scene_file(
       "cfdmp_sod_1d", "sod",
       {{"density: 1.0\n    pressure: 1.0\n    shape: {box: {lower: [0, 0, 0], upper: [0.5,",
@@ -176,24 +236,19 @@ TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited
   const auto dir = scene.parent_path();
   const auto checkpointed = run(scene, dir / "checkpointed", {.checkpoint_every = 3});
   ASSERT_EQ(checkpointed["status"], "completed");
-  EXPECT_GT(checkpointed["details"]["crossing"]["removed_particles"].get<int>(), 10);
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir / "checkpointed" / "checkpoints"))
-    files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  ASSERT_EQ(files.size(), 3u);
-  const auto step = static_cast<std::int64_t>(
-      io::Hdf5File(files.front(), io::Hdf5File::Mode::read).read_attribute("/", "step"));
-  const auto restarted = copy_back_to(dir / "checkpointed", dir / "restarted", step);
-  const auto summary = run(scene, restarted, {.restart = true, .overwrite = false});
-  ASSERT_EQ(summary["status"], "completed");
-  expect_same_run(dir / "checkpointed", restarted, "snapshot_000010.h5", "snapshot_000010.h5");
+  ASSERT_EQ(checkpoints_of(dir / "checkpointed").size(), 3u);
+  // Removed after the first checkpoint as well as before it.
+  const double removed = checkpointed["details"]["crossing"]["removed_particles"].get<double>();
+  const io::Hdf5File first(checkpoints_of(dir / "checkpointed")[0], io::Hdf5File::Mode::read);
+  EXPECT_GT(removed, first.read_attribute("/loop", "removed_particles"));
+  EXPECT_GT(removed, 10);
+  restart_from_each(scene);
 }
 
 TEST(CoupledRestart, A_zone_asleep_at_the_checkpoint_wakes_after_the_restart_as_it_would_have) {
   // The MPM zone sleeps until the blast's 1 MPa reaches the strip cells: in the step to
   // the first output (10 us), so the first checkpoint holds a zone whose watch has fired
-  // and that wakes at the start of the next step.
+  // and that wakes at the start of the next step; the later ones, a zone awake.
   const auto scene = blast_scene(
       "dormant",
       {{"mpm: {lower: [0.11, 0, 0], upper: [0.16, 0.5, 0.005]}",
@@ -201,27 +256,67 @@ TEST(CoupledRestart, A_zone_asleep_at_the_checkpoint_wakes_after_the_restart_as_
   const auto dir = scene.parent_path();
   const auto checkpointed = run(scene, dir / "checkpointed", {.checkpoint_every = 1});
   ASSERT_EQ(checkpointed["status"], "completed");
-  const double woke = checkpointed["details"]["activation"]["time_s"].get<double>();
-  ASSERT_EQ(woke, 1.0e-5);
-  // The first checkpoint (10 us) names no MPM file: the sleeping zone is its Setup's state.
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir / "checkpointed" / "checkpoints"))
-    files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 2u);
+  ASSERT_EQ(checkpointed["details"]["activation"]["time_s"].get<double>(), 1.0e-5);
+  const auto files = checkpoints_of(dir / "checkpointed");
+  ASSERT_EQ(files.size(), 3u);
+  // The first names no MPM file: the sleeping zone is its Setup's state.
   const io::Hdf5File oldest(files.front(), io::Hdf5File::Mode::read);
   EXPECT_EQ(oldest.read_string_attribute("/", "mpm_path"), "");
   EXPECT_EQ(oldest.read_attribute("/", "time"), 1.0e-5);
   EXPECT_EQ(oldest.read_attribute("/activation", "dormant"), 1.0);
   EXPECT_GT(oldest.read_attribute("/activation", "trigger_time"), 0.0);  // fired: not NaN
-  const auto step = static_cast<std::int64_t>(oldest.read_attribute("/", "step"));
+  const io::Hdf5File second(files[1], io::Hdf5File::Mode::read);
+  EXPECT_NE(second.read_string_attribute("/", "mpm_path"), "");
+  restart_from_each(scene);
+}
 
-  const auto restarted = copy_back_to(dir / "checkpointed", dir / "restarted", step);
-  const auto summary = run(scene, restarted, {.restart = true, .overwrite = false});
-  ASSERT_EQ(summary["status"], "completed");
-  EXPECT_EQ(summary["details"]["activation"]["time_s"].get<double>(), woke);
-  // The MPM's series starts at its first output awake (20 us): 3 snapshots.
-  expect_same_run(dir / "checkpointed", restarted, "snapshot_000004.h5", "snapshot_000002.h5");
+/// The AFDMP phase of each checkpoint of the run in <dir>/checkpointed (afdmp_phase.hpp:
+/// 2 fdm_blast, 3 mpm_fsi) and whether it names an MPM checkpoint.
+std::vector<std::pair<int, bool>> afdmp_checkpoints(const fs::path& scene) {
+  std::vector<std::pair<int, bool>> seen;
+  for (const auto& file : checkpoints_of(scene.parent_path() / "checkpointed")) {
+    const io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+    seen.emplace_back(static_cast<int>(h5.read_attribute("/phases", "phase")),
+                      !h5.read_string_attribute("/", "mpm_path").empty());
+  }
+  return seen;
+}
+
+TEST(CoupledRestart, An_afdmp_run_restarts_in_its_fdm_and_fsi_phases_and_hands_over_as_before) {
+  // V5 coarse, as afdmp_run_test: MPM detonation, FDM blast, then the plate's FSI phase;
+  // outputs every 10 us, a checkpoint after each but the last.
+  const auto scene = scene_file("afdmp_steel_plate_2d", "v5",
+                                {{"cells: [1000, 500, 1]", "cells: [100, 50, 1]"},
+                                 {"end: 3.0e-4", "end: 8.0e-5"},
+                                 {"interval: 2.0e-5", "interval: 1.0e-5"}});
+  const auto checkpointed =
+      run(scene, scene.parent_path() / "checkpointed", {.checkpoint_every = 1});
+  ASSERT_EQ(checkpointed["status"], "completed");
+  ASSERT_EQ(checkpointed["details"]["afdmp"]["handoffs"].size(), 2u);
+  const auto seen = afdmp_checkpoints(scene);
+  restart_from_each(scene);
+  // The FDM phase (the MPM holds the plate, idle) and the FSI phase (the FDM retired).
+  EXPECT_THAT(seen, ::testing::Contains(std::pair{2, true}));
+  EXPECT_THAT(seen, ::testing::Contains(std::pair{3, true}));
+}
+
+TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_fdm_phase_only) {
+  // V4 1D start, as afdmp_run_test, outputs every 5 us: the 1D stage (in the coupler) is
+  // not checkpointed, the FDM phase is, with the MPM retired (no FSI zone).
+  const auto scene = scene_file("afdmp_free_air_3d_1d", "v4s",
+                                {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"},
+                                 {"end: 3.4e-4", "end: 2.0e-5"},
+                                 {"interval: 5.0e-5", "interval: 5.0e-6"}});
+  const auto checkpointed =
+      run(scene, scene.parent_path() / "checkpointed", {.checkpoint_every = 1});
+  ASSERT_EQ(checkpointed["status"], "completed");
+  const auto seen = afdmp_checkpoints(scene);
+  restart_from_each(scene);
+  ASSERT_FALSE(seen.empty());
+  for (const auto& [phase, mpm] : seen) {
+    EXPECT_EQ(phase, 2);
+    EXPECT_FALSE(mpm);
+  }
 }
 
 TEST(CoupledRestart, A_restart_that_cannot_be_made_is_refused_and_the_folder_is_unchanged) {
@@ -253,10 +348,25 @@ TEST(CoupledRestart, A_restart_that_cannot_be_made_is_refused_and_the_folder_is_
               HasSubstr("was written for another scene text (attribute scene_sha256)"));
   EXPECT_EQ(read_text(dir / "checkpointed" / "summary.json"), finished);
 
-  const auto afdmp_scene = fs::path(MPFD_CONFIGS) / "afdmp_blast_2d.yaml";
-  EXPECT_THAT(refused(afdmp_scene, dir / "afdmp", {.checkpoint_every = 1}),
-              HasSubstr("has solver.method afdmp"));
-  EXPECT_FALSE(fs::exists(dir / "afdmp"));
+  // A coupler file with its header alone: refused after the solvers' Restore, when the
+  // coupler reads its state; what the stopped run wrote is as it was.
+  const auto files = checkpoints_of(dir / "checkpointed");
+  const auto broken = stopped_after(dir / "checkpointed", files.front(), dir / "broken");
+  const auto kept = newest_checkpoint(broken, read_text(scene), 2);
+  fs::remove(kept.file);
+  {
+    io::Hdf5File header_only(kept.file, io::Hdf5File::Mode::create);
+    write_checkpoint_header(header_only, kept, read_text(scene), 2);
+  }
+  const std::string stopped_gauges = read_text(broken / "gauges.csv");
+  const std::string stopped_h5 = read_text(broken / "gauges.h5");
+  const auto stopped_snapshots = snapshots(broken, "fdm");
+  EXPECT_THAT(refused(scene, broken, {.restart = true, .overwrite = false}),
+              HasSubstr("has no array '/loop/initial'"));
+  EXPECT_EQ(read_text(broken / "gauges.csv"), stopped_gauges);
+  EXPECT_EQ(read_text(broken / "gauges.h5"), stopped_h5);
+  EXPECT_EQ(snapshots(broken, "fdm"), stopped_snapshots);
+  EXPECT_THAT(read_text(broken / "summary.json"), HasSubstr("has no array '/loop/initial'"));
 }
 
 }  // namespace
