@@ -1,9 +1,10 @@
 #include "cosim/serving/sha256.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <fstream>
-#include <iterator>
+#include <vector>
 
 #include "common/core/error.hpp"
 
@@ -50,36 +51,65 @@ void compress(std::array<std::uint32_t, 8>& h, const unsigned char* block) {
   for (std::size_t i = 0; i < 8; ++i) h[i] += v[i];
 }
 
+/// The hash of a stream of bytes fed in pieces, each a whole number of 64-byte blocks
+/// but the last (a checkpoint of 10^8 bytes is hashed from a small buffer, not from a
+/// copy in memory).
+class Sha256 {
+ public:
+  void update(const unsigned char* data, std::size_t size) {
+    if (pending_ > 0) throw Error("sha256: a piece after one that did not end on a block");
+    length_ += size;
+    const std::size_t whole = size / 64 * 64;
+    for (std::size_t i = 0; i < whole; i += 64) compress(h_, data + i);
+    std::copy_n(data + whole, size - whole, block_.begin());
+    pending_ = size - whole;
+  }
+
+  /// FIPS 180-4 §5.1.1: a 1 bit, zeros, and the message length in bits (big-endian).
+  std::string hex() {
+    std::array<unsigned char, 128> tail{};
+    std::copy_n(block_.begin(), pending_, tail.begin());
+    tail[pending_] = 0x80;
+    const std::size_t tail_size = pending_ < 56 ? 64 : 128;
+    const std::uint64_t bits = std::uint64_t{length_} * 8;
+    for (std::size_t i = 0; i < 8; ++i)
+      tail[tail_size - 1 - i] = static_cast<unsigned char>(bits >> (8 * i));
+    for (std::size_t i = 0; i < tail_size; i += 64) compress(h_, tail.data() + i);
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string text;
+    for (const std::uint32_t word : h_)
+      for (int shift = 28; shift >= 0; shift -= 4) text += kHex[(word >> shift) & 0xfU];
+    return text;
+  }
+
+ private:
+  std::array<std::uint32_t, 8> h_ = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                                     0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+  std::array<unsigned char, 64> block_{};  ///< the last piece's bytes after its whole blocks
+  std::size_t pending_ = 0;                ///< how many
+  std::uint64_t length_ = 0;
+};
+
 }  // namespace
 
 std::string sha256_hex(std::string_view bytes) {
-  std::array<std::uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                                    0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  const std::size_t whole = bytes.size() / 64 * 64;
-  for (std::size_t i = 0; i < whole; i += 64) compress(h, data + i);
-  // FIPS 180-4 §5.1.1: a 1 bit, zeros, and the message length in bits (big-endian).
-  std::array<unsigned char, 128> tail{};
-  const std::size_t rest = bytes.size() - whole;
-  for (std::size_t i = 0; i < rest; ++i) tail[i] = data[whole + i];
-  tail[rest] = 0x80;
-  const std::size_t tail_size = rest < 56 ? 64 : 128;
-  const std::uint64_t bits = std::uint64_t{bytes.size()} * 8;
-  for (std::size_t i = 0; i < 8; ++i)
-    tail[tail_size - 1 - i] = static_cast<unsigned char>(bits >> (8 * i));
-  for (std::size_t i = 0; i < tail_size; i += 64) compress(h, tail.data() + i);
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string hex;
-  for (const std::uint32_t word : h)
-    for (int shift = 28; shift >= 0; shift -= 4) hex += kHex[(word >> shift) & 0xfU];
-  return hex;
+  Sha256 hash;
+  hash.update(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+  return hash.hex();
 }
 
 std::string sha256_hex_of_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open '" + path.string() + "' to hash it");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return sha256_hex(bytes);
+  Sha256 hash;
+  std::vector<char> buffer(std::size_t{1} << 20);  // whole blocks: only the last read is short
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    hash.update(reinterpret_cast<const unsigned char*>(buffer.data()),
+                static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw Error("cannot read '" + path.string() + "' to hash it");
+  return hash.hex();
 }
 
 }  // namespace mpfd::cosim

@@ -14,7 +14,6 @@
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
 #include "common/grid/uniform_grid.hpp"
-#include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "cosim/arrays.hpp"
 #include "coupler/handoff/detonation_trigger.hpp"
@@ -278,7 +277,7 @@ class AfdmpLoop {
   /// In the FDM and FSI phases, whose whole state the solvers hold: each solver still
   /// needed checkpoints, then the coupler's file is renamed into place last. The MPM
   /// detonation and the 1D stage are short and hold state in the coupler: none there.
-  void checkpoint(CouplerCheckpoint at, double wall) {
+  void checkpoint(const CouplerCheckpoint& at, double wall) {
     const AfdmpPhase phase = machine_.phase();
     if (phase != AfdmpPhase::fdm_blast && phase != AfdmpPhase::mpm_fsi) {
       Logger("coupler").info("no checkpoint at step ", at.step, ": phase ", phase_name(phase),
@@ -286,30 +285,17 @@ class AfdmpLoop {
       return;
     }
     const auto start = Clock::now();
-    at.file = coupler_checkpoint_file(options_.out_dir, at.step);
-    for (const auto& peer : kAfdmpPeers) {
-      if (retired_.contains(peer)) continue;
-      cosim::Message message;
-      message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
-      hub_.send(peer, std::move(message));
-      const auto reply = hub_.receive_from(peer, options_.handoff_timeout);
-      contact_[peer] = Clock::now();
-      if (!reply.header.has_checkpoint_written())
-        throw Error("solver '" + peer + "' answered Checkpoint with '" +
-                    std::string(cosim::body_name(reply.header)) + "'");
-      const auto& written = reply.header.checkpoint_written();
-      (peer == "fdm" ? at.fdm : at.mpm) = SolverCheckpoint{written.path(), written.step()};
-    }
-    std::filesystem::create_directories(at.file.parent_path());
-    io::write_path_atomically(at.file, [&](const std::filesystem::path& partial) {
-      io::Hdf5File file(partial, io::Hdf5File::Mode::create);
-      write_checkpoint_header(file, at, scene_text_, grid_dimension(scene_));
-      RestartWriter out(file);
-      save(out, wall);
-    });
-    checkpoints_["last"] = {{"file", at.file.string()}, {"step", at.step}, {"time_s", at.time}};
-    Logger("coupler").info("checkpoint at step ", at.step, ", t = ", at.time,
-                           " s: ", at.file.string(), " (", seconds_since(start), " s)");
+    std::vector<std::string> peers;
+    for (const auto& peer : kAfdmpPeers)
+      if (!retired_.contains(peer)) peers.push_back(peer);
+    const auto taken =
+        take_checkpoint(hub_, at, options_.out_dir, peers, options_.handoff_timeout, scene_text_,
+                        grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
+    for (const auto& peer : peers) contact_[peer] = Clock::now();
+    checkpoints_["last"] = {
+        {"file", taken.file.string()}, {"step", taken.step}, {"time_s", taken.time}};
+    Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
+                           " s: ", taken.file.string(), " (", seconds_since(start), " s)");
   }
 
   void save(RestartWriter& out, double wall) const {

@@ -10,7 +10,6 @@
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
-#include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "coupler/run/activation.hpp"
 #include "coupler/run/cfdmp_step.hpp"
@@ -289,31 +288,16 @@ class Loop {
     return {.time = from.time, .step = from.step, .outputs = from.outputs};
   }
 
-  /// Each awake solver's Checkpoint, then the coupler's file, renamed into place last.
-  void checkpoint(CouplerCheckpoint at, double wall) {
+  /// Each awake solver's Checkpoint, then the coupler's file (take_checkpoint).
+  void checkpoint(const CouplerCheckpoint& at, double wall) {
     const auto start = Clock::now();
-    at.file = coupler_checkpoint_file(options_.out_dir, at.step);
-    for (const auto& peer : peers()) {  // one at a time: a large write outlasts a step's timeout
-      cosim::Message message;
-      message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
-      hub_.send(peer, std::move(message));
-      const auto reply = hub_.receive_from(peer, options_.handoff_timeout);
-      if (!reply.header.has_checkpoint_written())
-        throw Error("solver '" + peer + "' answered Checkpoint with '" +
-                    std::string(cosim::body_name(reply.header)) + "'");
-      const auto& written = reply.header.checkpoint_written();
-      (peer == "fdm" ? at.fdm : at.mpm) = SolverCheckpoint{written.path(), written.step()};
-    }
-    std::filesystem::create_directories(at.file.parent_path());
-    io::write_path_atomically(at.file, [&](const std::filesystem::path& partial) {
-      io::Hdf5File file(partial, io::Hdf5File::Mode::create);
-      write_checkpoint_header(file, at, scene_text_, grid_dimension(scene_));
-      RestartWriter out(file);
-      save(out, wall);
-    });
-    checkpoints_["last"] = {{"file", at.file.string()}, {"step", at.step}, {"time_s", at.time}};
-    Logger("coupler").info("checkpoint at step ", at.step, ", t = ", at.time,
-                           " s: ", at.file.string(), " (", seconds_since(start), " s)");
+    const auto taken =
+        take_checkpoint(hub_, at, options_.out_dir, peers(), options_.handoff_timeout, scene_text_,
+                        grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
+    checkpoints_["last"] = {
+        {"file", taken.file.string()}, {"step", taken.step}, {"time_s", taken.time}};
+    Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
+                           " s: ", taken.file.string(), " (", seconds_since(start), " s)");
   }
 
   void save(RestartWriter& out, double wall) const {

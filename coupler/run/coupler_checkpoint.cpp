@@ -5,6 +5,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
+#include "common/io/output_directory.hpp"
 #include "cosim/serving/sha256.hpp"
 
 namespace mpfd::coupler {
@@ -15,9 +16,11 @@ namespace fs = std::filesystem;
 /// `path` relative to `out_dir` when it lies in it: the run's folder may move between
 /// the checkpoint and the restart. A solver on another host keeps its own path.
 std::string portable(const std::string& path, const fs::path& out_dir) {
-  const fs::path relative = fs::path(path).lexically_relative(fs::absolute(out_dir));
+  // A relative path is the solver's (a thread's or child's) from the coupler's folder.
+  const fs::path relative = fs::absolute(path).lexically_normal().lexically_relative(
+      fs::absolute(out_dir).lexically_normal());
   const bool inside = !relative.empty() && *relative.begin() != "..";
-  return inside && fs::path(path).is_absolute() ? relative.string() : path;
+  return inside ? relative.string() : path;
 }
 
 void write_solver(io::Hdf5File& file, const std::string& name,
@@ -118,6 +121,32 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
   if (!checkpoint.fdm && !checkpoint.mpm)
     refuse("names no solver checkpoint (attributes fdm_path and mpm_path are empty)");
   return checkpoint;
+}
+
+CouplerCheckpoint take_checkpoint(cosim::Hub& hub, CouplerCheckpoint at, const fs::path& out_dir,
+                                  const std::vector<std::string>& peers,
+                                  std::chrono::milliseconds timeout, const std::string& scene_text,
+                                  int dimension, const std::function<void(RestartWriter&)>& save) {
+  at.file = coupler_checkpoint_file(out_dir, at.step);
+  for (const auto& peer : peers) {
+    cosim::Message message;
+    message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
+    hub.send(peer, std::move(message));
+    const auto reply = hub.receive_from(peer, timeout);
+    if (!reply.header.has_checkpoint_written())
+      throw Error("solver '" + peer + "' answered Checkpoint with '" +
+                  std::string(cosim::body_name(reply.header)) + "'");
+    const auto& written = reply.header.checkpoint_written();
+    (peer == "fdm" ? at.fdm : at.mpm) = SolverCheckpoint{written.path(), written.step()};
+  }
+  fs::create_directories(at.file.parent_path());
+  io::write_path_atomically(at.file, [&](const fs::path& partial) {
+    io::Hdf5File file(partial, io::Hdf5File::Mode::create);
+    write_checkpoint_header(file, at, scene_text, dimension);
+    RestartWriter out(file);
+    save(out);
+  });
+  return at;
 }
 
 void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,

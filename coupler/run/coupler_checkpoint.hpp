@@ -21,12 +21,15 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/config/scene.hpp"
 #include "common/io/hdf5_file.hpp"
 #include "cosim/hub.hpp"
+#include "coupler/run/restart_file.hpp"
 
 namespace mpfd::coupler {
 
@@ -65,6 +68,17 @@ void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkp
 /// and the attribute when it was written for another scene or format.
 [[nodiscard]] CouplerCheckpoint newest_checkpoint(const std::filesystem::path& out_dir,
                                                   const std::string& scene_text, int dimension);
+
+/// Takes a coupled checkpoint at `at` (step, time, outputs): each of `peers` writes its
+/// own (one at a time, waiting `timeout` for each: a large grid outlasts a step's reply),
+/// then `save` writes the coupler's state after the header into at.file, written beside
+/// it and renamed into place last. Returns at with its file and the solvers' files.
+/// Throws mpfd::Error naming a solver that answers otherwise.
+CouplerCheckpoint take_checkpoint(cosim::Hub& hub, CouplerCheckpoint at,
+                                  const std::filesystem::path& out_dir,
+                                  const std::vector<std::string>& peers,
+                                  std::chrono::milliseconds timeout, const std::string& scene_text,
+                                  int dimension, const std::function<void(RestartWriter&)>& save);
 
 /// Sends each solver that has a file in `from` its Restore and checks the Restored step
 /// (a zone that slept, or had been retired, has none: it stays as Setup made it). Waits

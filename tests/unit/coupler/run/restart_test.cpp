@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -243,6 +244,20 @@ TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited
   EXPECT_GT(removed, first.read_attribute("/loop", "removed_particles"));
   EXPECT_GT(removed, 10);
   restart_from_each(scene);
+
+  // --out given relative to the working folder: the solvers' files are found again.
+  const fs::path relative = fs::relative(dir / "relative", fs::current_path());
+  ASSERT_TRUE(relative.is_relative());
+  run(scene, relative, {.checkpoint_every = 3});
+  const auto files = checkpoints_of(relative);
+  const io::Hdf5File header(files.back(), io::Hdf5File::Mode::read);
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "fdm/checkpoints/checkpoint_%06d.h5",
+                static_cast<int>(header.read_attribute("/", "fdm_step")));
+  EXPECT_EQ(header.read_string_attribute("/", "fdm_path"), expected);  // relative to the run
+  const auto summary = run(scene, relative, {.restart = true, .overwrite = false});
+  EXPECT_EQ(summary["status"], "completed");
+  expect_same_run(dir / "checkpointed", relative);
 }
 
 TEST(CoupledRestart, A_zone_asleep_at_the_checkpoint_wakes_after_the_restart_as_it_would_have) {

@@ -61,6 +61,20 @@ TEST(FdmServeCheckpoint, Sha256OfAbcIsTheFips180Example) {
             "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 }
 
+TEST(FdmServeCheckpoint, Sha256OfAFileIsHashedInPiecesAsTheWholeInMemory) {
+  // FIPS 180-2 appendix B.3: a million 'a'.
+  EXPECT_EQ(cosim::sha256_hex(std::string(1000000, 'a')),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+  // A file of 2.5 MiB + 7 bytes: read in 1 MiB pieces, the last one short of a block.
+  const TempDir dir("sha");
+  std::string bytes(5 * (std::size_t{1} << 19) + 7, '\0');
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 7919) % 251);
+  std::filesystem::create_directories(dir.path());
+  const auto file = dir.path() / "bytes.bin";
+  std::ofstream(file, std::ios::binary) << bytes;
+  EXPECT_EQ(cosim::sha256_hex_of_file(file), cosim::sha256_hex(bytes));
+}
+
 TEST(FdmServeCheckpoint,
      SodRestoredFromStepTenAndAdvancedTenStepsEqualsTheUninterruptedRunBitwise) {
   const TempDir dir("sod");
