@@ -128,7 +128,7 @@ class AfdmpLoop {
   CoupledRunReport run() {
     const auto start = Clock::now();
     phase_start_ = start;
-    const Position at = options_.restart ? resume(*options_.restart) : begin();
+    const RunPosition at = options_.restart ? resume(*options_.restart) : begin();
     const auto wall = [&] { return earlier_wall_seconds_ + seconds_since(start); };
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
     const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
@@ -210,15 +210,8 @@ class AfdmpLoop {
   [[nodiscard]] const std::set<std::string>& retired() const { return retired_; }
 
  private:
-  /// Where the step loop starts: t [s], steps done, outputs written.
-  struct Position {
-    double time = 0;
-    std::int64_t step = 0;
-    int outputs = 0;
-  };
-
   /// A new run: phase 1 (or the 1D stage) set up, the audit's start, output 0.
-  Position begin() {
+  RunPosition begin() {
     if (start_ == AfdmpStart::spherical) {
       stage_.emplace(scene_);
       holder_ = "spherical";
@@ -245,10 +238,8 @@ class AfdmpLoop {
 
   /// A restarted run (the solvers are restored, run_afdmp): the coupler's state from
   /// `from`, and the solvers retired before it are retired again.
-  Position resume(const CouplerCheckpoint& from) {
-    {
-      const io::Hdf5File file(from.file, io::Hdf5File::Mode::read);
-      const RestartReader in(file);
+  RunPosition resume(const CouplerCheckpoint& from) {
+    from.read_state([&](const RestartReader& in) {
       restore(in);
       for (const auto& [peer, checkpoint] :
            {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}})
@@ -256,7 +247,7 @@ class AfdmpLoop {
           in.refuse(std::string("names ") + (checkpoint ? "a" : "no") + " checkpoint of solver '" +
                     peer + "', which " + (checkpoint ? "was" : "was not") + " retired (attribute " +
                     peer + "_path, /afdmp/" + peer + "_retired)");
-    }
+    });
     report_.steps = from.step;
     report_.time = from.time;
     for (const auto& peer : kAfdmpPeers)
@@ -271,7 +262,7 @@ class AfdmpLoop {
     Logger("coupler").info("restarted from ", from.file.string(), ": phase ",
                            phase_name(machine_.phase()), ", step ", from.step, ", t = ", from.time,
                            " s, ", from.outputs, " outputs written");
-    return {.time = from.time, .step = from.step, .outputs = from.outputs};
+    return from.position();
   }
 
   /// In the FDM and FSI phases, whose whole state the solvers hold: each solver still

@@ -144,7 +144,7 @@ class Loop {
 
   CoupledRunReport run() {
     const auto start = Clock::now();
-    const Position at = options_.restart ? resume(*options_.restart) : begin();
+    const RunPosition at = options_.restart ? resume(*options_.restart) : begin();
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
     const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
     int outputs = at.outputs;
@@ -246,15 +246,8 @@ class Loop {
   }
 
  private:
-  /// Where the step loop starts: t [s], steps done, outputs written.
-  struct Position {
-    double time = 0;
-    std::int64_t step = 0;
-    int outputs = 0;
-  };
-
   /// A new run: the step-0 exchange (audit), the zone's activation if due, output 0.
-  Position begin() {
+  RunPosition begin() {
     exchange({.advance = false, .audit = true});
     initial_ = current();
     if (watch_.due()) activate(0, 0);
@@ -265,16 +258,14 @@ class Loop {
   /// A restarted run (the solvers are restored, run_cfdmp): the coupler's state from
   /// `from`, then the output's exchange again, which brings back the strip cells, face
   /// mass, proposals and audit totals of t^n without changing either solver.
-  Position resume(const CouplerCheckpoint& from) {
-    {
-      const io::Hdf5File file(from.file, io::Hdf5File::Mode::read);
-      const RestartReader in(file);
+  RunPosition resume(const CouplerCheckpoint& from) {
+    from.read_state([&](const RestartReader& in) {
       restore(in);
       if (from.mpm.has_value() == watch_.dormant())
         in.refuse(std::string(watch_.dormant() ? "names an MPM checkpoint for a sleeping zone"
                                                : "names no MPM checkpoint for an awake zone") +
                   " (attribute mpm_path, group /activation)");
-    }
+    });
     report_.steps = from.step;
     report_.time = from.time;
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
@@ -285,7 +276,7 @@ class Loop {
     checkpoints_["last"] = checkpoints_["restarted_from"];
     Logger("coupler").info("restarted from ", from.file.string(), ": step ", from.step,
                            ", t = ", from.time, " s, ", from.outputs, " outputs written");
-    return {.time = from.time, .step = from.step, .outputs = from.outputs};
+    return from.position();
   }
 
   /// Each awake solver's Checkpoint, then the coupler's file (take_checkpoint).

@@ -123,6 +123,11 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
   return checkpoint;
 }
 
+void CouplerCheckpoint::read_state(const std::function<void(const RestartReader&)>& restore) const {
+  const io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  restore(RestartReader(h5));
+}
+
 CouplerCheckpoint take_checkpoint(cosim::Hub& hub, CouplerCheckpoint at, const fs::path& out_dir,
                                   const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,

@@ -42,6 +42,13 @@ struct SolverCheckpoint {
   std::uint64_t step = 0;  ///< Restore's step
 };
 
+/// Where a run's step loop starts: t^n [s], steps done, outputs written.
+struct RunPosition {
+  double time = 0;
+  std::int64_t step = 0;
+  int outputs = 0;
+};
+
 /// A coupler checkpoint's header.
 struct CouplerCheckpoint {
   std::filesystem::path file{};
@@ -49,6 +56,10 @@ struct CouplerCheckpoint {
   double time = 0;                               ///< t^n [s]
   int outputs = 0;                               ///< outputs written (the next one's index)
   std::optional<SolverCheckpoint> fdm{}, mpm{};  ///< none: the solver was asleep
+
+  [[nodiscard]] RunPosition position() const { return {time, step, outputs}; }
+  /// Opens `file` and hands the coupler's state in it to `restore`.
+  void read_state(const std::function<void(const RestartReader&)>& restore) const;
 };
 
 /// The axes with more than one cell (a checkpoint's `dimension`).
