@@ -1,19 +1,12 @@
 #include "coupler/run/activation.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace mpfd::coupler {
 namespace {
 
 constexpr const char* kActivationOwner = "activation";
-constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  ///< an empty optional
-
-std::optional<double> optional_of(double value) {
-  return std::isnan(value) ? std::nullopt : std::optional<double>(value);
-}
 
 }  // namespace
 
@@ -64,10 +57,10 @@ std::string ActivationWatch::activation_text() const {
 
 void ActivationWatch::save(RestartWriter& out) const {
   out.number(kActivationOwner, "dormant", dormant_ ? 1 : 0);
-  out.number(kActivationOwner, "trigger_time", trigger_time_.value_or(kNone));
+  out.optional_number(kActivationOwner, "trigger_time", trigger_time_);
   out.number(kActivationOwner, "trigger_pressure", trigger_pressure_);
   out.number(kActivationOwner, "peak_pressure", peak_pressure_);
-  out.number(kActivationOwner, "activation_time", activation_time_.value_or(kNone));
+  out.optional_number(kActivationOwner, "activation_time", activation_time_);
   out.number(kActivationOwner, "activation_step", static_cast<double>(activation_step_));
 }
 
@@ -76,10 +69,10 @@ void ActivationWatch::restore(const RestartReader& in) {
   if (dormant && !threshold_)
     in.refuse("holds a sleeping MPM zone; this scene has no zones.mpm.activation_pressure");
   dormant_ = dormant;
-  trigger_time_ = optional_of(in.number(kActivationOwner, "trigger_time"));
+  trigger_time_ = in.optional_number(kActivationOwner, "trigger_time");
   trigger_pressure_ = in.number(kActivationOwner, "trigger_pressure");
   peak_pressure_ = in.number(kActivationOwner, "peak_pressure");
-  activation_time_ = optional_of(in.number(kActivationOwner, "activation_time"));
+  activation_time_ = in.optional_number(kActivationOwner, "activation_time");
   activation_step_ = static_cast<std::int64_t>(in.number(kActivationOwner, "activation_step"));
 }
 

@@ -1,8 +1,6 @@
 #include "coupler/run/afdmp_phase.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <string>
 
 #include "common/core/error.hpp"
@@ -122,9 +120,9 @@ std::optional<Transition> PhaseMachine::trigger(const Observation& o) {
 
 void PhaseMachine::save(RestartWriter& out) const {
   out.number("phases", "phase", static_cast<double>(phase_));
-  out.number("phases", "explosive_at_start",
-             explosive_at_start_ ? static_cast<double>(*explosive_at_start_)
-                                 : std::numeric_limits<double>::quiet_NaN());
+  out.optional_number(
+      "phases", "explosive_at_start",
+      explosive_at_start_ ? std::optional<double>(*explosive_at_start_) : std::nullopt);
   watch_.save(out);
 }
 
@@ -133,12 +131,11 @@ void PhaseMachine::restore(const RestartReader& in) {
   if (!(phase >= 0 && phase <= static_cast<double>(AfdmpPhase::done)))
     in.refuse("holds phase " + std::to_string(phase) + "; expected 0 ... " +
               std::to_string(static_cast<int>(AfdmpPhase::done)));
-  const double explosive = in.number("phases", "explosive_at_start");
+  const auto explosive = in.optional_number("phases", "explosive_at_start");
   watch_.restore(in);
   phase_ = static_cast<AfdmpPhase>(static_cast<int>(phase));
-  explosive_at_start_ = std::isnan(explosive)
-                            ? std::nullopt
-                            : std::optional<std::size_t>(static_cast<std::size_t>(explosive));
+  explosive_at_start_.reset();
+  if (explosive) explosive_at_start_ = static_cast<std::size_t>(*explosive);
 }
 
 Transition PhaseMachine::move_to(AfdmpPhase to, AfdmpTrigger why, const Observation& observation,

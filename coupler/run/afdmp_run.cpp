@@ -162,7 +162,7 @@ class AfdmpLoop {
         record_summary("running", wall());
         const int every = options_.checkpoint_every;
         if (every > 0 && (outputs - 1) % every == 0 && machine_.phase() != AfdmpPhase::done) {
-          checkpoint({.step = n, .time = t, .outputs = outputs}, wall());
+          checkpoint({.time = t, .step = n, .outputs = outputs}, wall());
           record_summary("running", wall());
         }
       }
@@ -236,8 +236,9 @@ class AfdmpLoop {
     return {.time = 0, .step = 0, .outputs = 1};
   }
 
-  /// A restarted run (the solvers are restored, run_afdmp): the coupler's state from
-  /// `from`, and the solvers retired before it are retired again.
+  /// A restarted run: the coupler's state from `from`, checked, then each solver's
+  /// Restore, the solvers retired before it retired again, and gauges.csv as the
+  /// checkpoint had it. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
     from.read_state([&](const RestartReader& in) {
       restore(in);
@@ -248,11 +249,13 @@ class AfdmpLoop {
                     peer + "', which " + (checkpoint ? "was" : "was not") + " retired (attribute " +
                     peer + "_path, /afdmp/" + peer + "_retired)");
     });
+    restore_solvers(hub_, from, options_.handoff_timeout);
     report_.steps = from.step;
     report_.time = from.time;
     for (const auto& peer : kAfdmpPeers)
       if (retired_.contains(peer))
         retire(peer, "retired before the checkpoint this run restarts from");
+    gauges_.resume_files();
     for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
     summary_ready_ = true;
@@ -268,7 +271,7 @@ class AfdmpLoop {
   /// In the FDM and FSI phases, whose whole state the solvers hold: each solver still
   /// needed checkpoints, then the coupler's file is renamed into place last. The MPM
   /// detonation and the 1D stage are short and hold state in the coupler: none there.
-  void checkpoint(const CouplerCheckpoint& at, double wall) {
+  void checkpoint(const RunPosition& at, double wall) {
     const AfdmpPhase phase = machine_.phase();
     if (phase != AfdmpPhase::fdm_blast && phase != AfdmpPhase::mpm_fsi) {
       Logger("coupler").info("no checkpoint at step ", at.step, ": phase ", phase_name(phase),
@@ -301,7 +304,12 @@ class AfdmpLoop {
     out.text("afdmp", "outputs", outputs_.dump());
     out.number("afdmp", "phase_time", phase_time_);
     out.number("afdmp", "phase_steps", static_cast<double>(phase_steps_));
+    out.number("afdmp", "phase_wall_seconds", seconds_since(phase_start_));
     out.number("afdmp", "wall_seconds", wall);
+    // What the solvers offered decides the audit's outflow and the handoffs' material import.
+    out.number("afdmp", "fdm_outflow", outflow_.fdm ? 1 : 0);
+    out.number("afdmp", "mpm_outflow", outflow_.mpm ? 1 : 0);
+    out.number("afdmp", "fdm_material_import", settings_.material_import ? 1 : 0);
     machine_.save(out);
     audit_.save(out);
     gauges_.save(out);
@@ -323,6 +331,18 @@ class AfdmpLoop {
     outputs_ = in.json("afdmp", "outputs");
     phase_time_ = in.number("afdmp", "phase_time");
     phase_steps_ = static_cast<std::int64_t>(in.number("afdmp", "phase_steps"));
+    phase_start_ =
+        Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                           std::chrono::duration<double>(in.number("afdmp", "phase_wall_seconds")));
+    const std::pair<const char*, bool> features[] = {
+        {"fdm_outflow", outflow_.fdm},
+        {"mpm_outflow", outflow_.mpm},
+        {"fdm_material_import", settings_.material_import}};
+    for (const auto& [name, now] : features)
+      if ((in.number("afdmp", name) != 0) != now)
+        in.refuse("was written with solvers " + std::string(now ? "without" : "with") + " '" +
+                  name + "' (/afdmp/" + name + "); these " + (now ? "offer" : "lack") +
+                  " it: restart with the solvers of that run");
     earlier_wall_seconds_ = in.number("afdmp", "wall_seconds");
     machine_.restore(in);
     audit_.restore(in);
@@ -678,7 +698,6 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kAfdmpPeers);
-    if (options.restart) restore_solvers(hub, *options.restart, options.handoff_timeout);
     AfdmpLoop loop(scene, scene_text, layout, outflow, material_import, hub, summary, options);
     try {
       const CoupledRunReport report = loop.run();

@@ -183,7 +183,7 @@ class Loop {
         record_summary("running", wall());
         const int every = options_.checkpoint_every;
         if (every > 0 && (outputs - 1) % every == 0 && t < scene_.time.end * (1 - 1e-12)) {
-          checkpoint({.step = n, .time = t, .outputs = outputs}, wall());
+          checkpoint({.time = t, .step = n, .outputs = outputs}, wall());
           record_summary("running", wall());
         }
       }
@@ -255,9 +255,10 @@ class Loop {
     return {.time = 0, .step = 0, .outputs = 1};
   }
 
-  /// A restarted run (the solvers are restored, run_cfdmp): the coupler's state from
-  /// `from`, then the output's exchange again, which brings back the strip cells, face
-  /// mass, proposals and audit totals of t^n without changing either solver.
+  /// A restarted run: the coupler's state from `from`, checked, then each solver's
+  /// Restore, gauges.csv as the checkpoint had it, and the output's exchange again, which
+  /// brings back the strip cells, face mass, proposals and audit totals of t^n without
+  /// changing either solver. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
     from.read_state([&](const RestartReader& in) {
       restore(in);
@@ -266,6 +267,8 @@ class Loop {
                                                : "names no MPM checkpoint for an awake zone") +
                   " (attribute mpm_path, group /activation)");
     });
+    restore_solvers(hub_, from, options_.handoff_timeout);
+    gauges_.resume_files();
     report_.steps = from.step;
     report_.time = from.time;
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
@@ -280,8 +283,9 @@ class Loop {
   }
 
   /// Each awake solver's Checkpoint, then the coupler's file (take_checkpoint).
-  void checkpoint(const CouplerCheckpoint& at, double wall) {
+  void checkpoint(const RunPosition& at, double wall) {
     const auto start = Clock::now();
+    if (watch_.dormant()) keep_mpm_alive();  // it takes no Checkpoint, so no message meanwhile
     const auto taken =
         take_checkpoint(hub_, at, options_.out_dir, peers(), options_.handoff_timeout, scene_text_,
                         grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
@@ -519,7 +523,6 @@ CoupledRunReport run_cfdmp(const config::Scene& scene, const std::string& scene_
     hub.send("fdm", std::move(messages[0]));
     hub.send("mpm", std::move(messages[1]));
     hub.gather(kPeers);
-    if (options.restart) restore_solvers(hub, *options.restart, options.handoff_timeout);
     logger.info("zones set up: face normal to axis ", layout.face_axis, " side ", layout.face_side,
                 ", strip ", box_text(layout.strip_cells), ", ghost cells ",
                 box_text(layout.ghost_cells));

@@ -1,6 +1,8 @@
 #include "coupler/run/coupler_checkpoint.hpp"
 
 #include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 
 #include "common/core/error.hpp"
@@ -68,8 +70,23 @@ void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkp
   write_solver(file, "mpm", checkpoint.mpm, out_dir);
 }
 
+void remove_checkpoints(const fs::path& out_dir) {
+  for (const fs::path& folder :
+       {out_dir / "checkpoints", out_dir / "fdm" / "checkpoints", out_dir / "mpm" / "checkpoints"})
+    fs::remove_all(folder);
+}
+
 CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& scene_text,
                                     int dimension) {
+  const fs::path summary = out_dir / "summary.json";
+  if (fs::exists(summary)) {
+    std::ifstream in(summary);
+    const auto status = nlohmann::json::parse(in, nullptr, false).value("status", "");
+    if (status == "completed")
+      throw Error("--restart: the run in '" + out_dir.string() +
+                  "' has completed (summary.json: status completed); there is nothing to go on "
+                  "with. To run it again, run without --restart, with --overwrite");
+  }
   const fs::path folder = out_dir / "checkpoints";
   const std::regex pattern(R"(coupler_(\d+)\.h5)");
   std::optional<fs::path> newest;
@@ -128,50 +145,61 @@ void CouplerCheckpoint::read_state(const std::function<void(const RestartReader&
   restore(RestartReader(h5));
 }
 
-CouplerCheckpoint take_checkpoint(cosim::Hub& hub, CouplerCheckpoint at, const fs::path& out_dir,
+CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, const fs::path& out_dir,
                                   const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,
                                   int dimension, const std::function<void(RestartWriter&)>& save) {
-  at.file = coupler_checkpoint_file(out_dir, at.step);
+  CouplerCheckpoint taken{.file = coupler_checkpoint_file(out_dir, at.step),
+                          .step = at.step,
+                          .time = at.time,
+                          .outputs = at.outputs};
+  // All at once: each solver writes while the others do, and none waits idle meanwhile.
   for (const auto& peer : peers) {
     cosim::Message message;
     message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
     hub.send(peer, std::move(message));
+  }
+  for (const auto& peer : peers) {
     const auto reply = hub.receive_from(peer, timeout);
     if (!reply.header.has_checkpoint_written())
       throw Error("solver '" + peer + "' answered Checkpoint with '" +
                   std::string(cosim::body_name(reply.header)) + "'");
     const auto& written = reply.header.checkpoint_written();
-    (peer == "fdm" ? at.fdm : at.mpm) = SolverCheckpoint{written.path(), written.step()};
+    (peer == "fdm" ? taken.fdm : taken.mpm) = SolverCheckpoint{written.path(), written.step()};
   }
-  fs::create_directories(at.file.parent_path());
-  io::write_path_atomically(at.file, [&](const fs::path& partial) {
+  fs::create_directories(taken.file.parent_path());
+  io::write_path_atomically(taken.file, [&](const fs::path& partial) {
     io::Hdf5File file(partial, io::Hdf5File::Mode::create);
-    write_checkpoint_header(file, at, scene_text, dimension);
+    write_checkpoint_header(file, taken, scene_text, dimension);
     RestartWriter out(file);
     save(out);
   });
-  return at;
+  return taken;
 }
 
 void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,
                      std::chrono::milliseconds timeout) {
-  for (const auto& [peer, file] : {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}}) {
-    if (!file) continue;
+  const std::pair<const char*, const std::optional<SolverCheckpoint>*> solvers[] = {
+      {"fdm", &from.fdm}, {"mpm", &from.mpm}};
+  for (const auto& [peer, file] : solvers) {  // all at once, as take_checkpoint
+    if (!*file) continue;
     cosim::Message message;
-    message.header.mutable_restore()->set_path(file->path);
-    message.header.mutable_restore()->set_step(file->step);
+    message.header.mutable_restore()->set_path((*file)->path);
+    message.header.mutable_restore()->set_step((*file)->step);
     hub.send(peer, std::move(message));
+  }
+  for (const auto& [peer, file] : solvers) {
+    if (!*file) continue;
     const auto reply = hub.receive_from(peer, timeout);
     if (!reply.header.has_restored())
       throw Error("solver '" + std::string(peer) + "' answered Restore with '" +
                   std::string(cosim::body_name(reply.header)) + "'");
-    if (reply.header.restored().step() != file->step)
-      throw Error("solver '" + std::string(peer) + "' restored '" + file->path + "' at step " +
+    if (reply.header.restored().step() != (*file)->step)
+      throw Error("solver '" + std::string(peer) + "' restored '" + (*file)->path + "' at step " +
                   std::to_string(reply.header.restored().step()) + "; the coupler checkpoint '" +
-                  from.file.string() + "' names step " + std::to_string(file->step));
-    Logger("coupler").info("solver '", peer, "' restored '", file->path, "' (step ", file->step,
-                           ", t = ", reply.header.restored().time(), " s)");
+                  from.file.string() + "' names step " + std::to_string((*file)->step));
+    Logger("coupler").info("solver '", peer, "' restored '", (*file)->path, "' (step ",
+                           (*file)->step, ", t = ", reply.header.restored().time(), " s)");
   }
 }
 

@@ -74,26 +74,32 @@ struct CouplerCheckpoint {
 void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkpoint,
                              const std::string& scene_text, int dimension);
 
+/// Removes the checkpoints an earlier run left in `out_dir` (the coupler's and the
+/// solvers'): a run started afresh there must not be restarted from them.
+void remove_checkpoints(const std::filesystem::path& out_dir);
+
 /// The newest coupler checkpoint in <out_dir>/checkpoints, its header checked against
-/// the scene. Throws mpfd::Error naming the folder when it holds none, and the file
-/// and the attribute when it was written for another scene or format.
+/// the scene. Throws mpfd::Error naming the folder when it holds none or its run has
+/// completed, and the file and the attribute when it was written for another scene or
+/// format.
 [[nodiscard]] CouplerCheckpoint newest_checkpoint(const std::filesystem::path& out_dir,
                                                   const std::string& scene_text, int dimension);
 
-/// Takes a coupled checkpoint at `at` (step, time, outputs): each of `peers` writes its
-/// own (one at a time, waiting `timeout` for each: a large grid outlasts a step's reply),
-/// then `save` writes the coupler's state after the header into at.file, written beside
-/// it and renamed into place last. Returns at with its file and the solvers' files.
-/// Throws mpfd::Error naming a solver that answers otherwise.
-CouplerCheckpoint take_checkpoint(cosim::Hub& hub, CouplerCheckpoint at,
+/// Takes a coupled checkpoint at `at`: each of `peers` writes its own (all at once,
+/// waiting `timeout` for each: a large grid outlasts a step's reply), then `save` writes
+/// the coupler's state after the header into <out_dir>/checkpoints/coupler_NNNNNN.h5,
+/// written beside it and renamed into place last. Returns what was written. Throws
+/// mpfd::Error naming a solver that answers otherwise.
+CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at,
                                   const std::filesystem::path& out_dir,
                                   const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,
                                   int dimension, const std::function<void(RestartWriter&)>& save);
 
-/// Sends each solver that has a file in `from` its Restore and checks the Restored step
-/// (a zone that slept, or had been retired, has none: it stays as Setup made it). Waits
-/// `timeout` for each (a large grid takes longer than a step's reply). Throws mpfd::Error.
+/// Sends each solver that has a file in `from` its Restore, all at once, and checks the
+/// Restored step (a zone that slept, or had been retired, has none: it stays as Setup
+/// made it). Waits `timeout` for each (a large grid takes longer than a step's reply).
+/// Throws mpfd::Error.
 void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,
                      std::chrono::milliseconds timeout);
 

@@ -123,9 +123,15 @@ void CoupledGauges::restore(const RestartReader& in) {
   started_ = in.number("gauges", "started") != 0;
   next_sample_ = in.number("gauges", "next_sample");
   if (!recorder_) return;
-  const auto times = in.array("gauges", "times");
-  const auto values = in.array("gauges", "values", times.size() * sample_.size());
-  recorder_->resume(times, values);
+  restored_times_ = in.array("gauges", "times");
+  restored_values_ = in.array("gauges", "values", restored_times_.size() * sample_.size());
+}
+
+void CoupledGauges::resume_files() {
+  if (!recorder_) return;
+  recorder_->resume(restored_times_, restored_values_);
+  restored_times_ = {};
+  restored_values_ = {};
 }
 
 void CoupledGauges::add(bool advance, double time, GaugeSamplers samplers, cosim::Message& fdm,

@@ -69,9 +69,11 @@ class CoupledGauges {
   void flush();
 
   /// Its state in a coupled checkpoint (restart_file.hpp): the schedule and every
-  /// sample so far; restore() also rewrites gauges.csv with those samples.
+  /// sample so far. restore() reads them; resume_files() then rewrites gauges.csv with
+  /// them, last, once the restart can no longer be refused.
   void save(RestartWriter& out) const;
   void restore(const RestartReader& in);
+  void resume_files();
 
   /// [{name, position [m], solver}] for summary.json.
   [[nodiscard]] nlohmann::json listing() const;
@@ -109,6 +111,7 @@ class CoupledGauges {
   std::size_t quantities_ = 0;  ///< recorded per gauge: 8, or 9 with mises_stress
   /// gauge-major: density, pressure, velocity_x|y|z[, mises_stress], position_x|y|z
   std::vector<double> sample_;
+  std::vector<double> restored_times_, restored_values_;  ///< restore() until resume_files()
 };
 
 }  // namespace mpfd::coupler

@@ -102,6 +102,7 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
     options.restart = newest_checkpoint(options.out_dir, text, grid_dimension(scene));
   } else {
     io::prepare_output_directory(options.out_dir, launch.overwrite);
+    remove_checkpoints(options.out_dir);  // an earlier run's, where --overwrite reuses its folder
   }
   options.scene_file = scene_file;
 

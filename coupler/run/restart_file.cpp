@@ -1,5 +1,7 @@
 #include "coupler/run/restart_file.hpp"
 
+#include <cmath>
+
 #include "common/core/error.hpp"
 
 namespace mpfd::coupler {
@@ -11,6 +13,11 @@ void RestartWriter::make_group(const std::string& owner) {
 void RestartWriter::number(const std::string& owner, const std::string& name, double value) {
   make_group(owner);
   file_.write_attribute("/" + owner, name, value);
+}
+
+void RestartWriter::optional_number(const std::string& owner, const std::string& name,
+                                    std::optional<double> value) {
+  number(owner, name, value.value_or(std::numeric_limits<double>::quiet_NaN()));
 }
 
 void RestartWriter::array(const std::string& owner, const std::string& name,
@@ -33,6 +40,12 @@ double RestartReader::number(const std::string& owner, const std::string& name) 
   } catch (const std::exception& error) {
     refuse("has no number '" + name + "' on '/" + owner + "': " + error.what());
   }
+}
+
+std::optional<double> RestartReader::optional_number(const std::string& owner,
+                                                     const std::string& name) const {
+  const double value = number(owner, name);
+  return std::isnan(value) ? std::nullopt : std::optional<double>(value);
 }
 
 std::vector<double> RestartReader::array(const std::string& owner, const std::string& name,

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ class RestartWriter {
 
   /// Writes `value` as "/<owner>/<name>".
   void number(const std::string& owner, const std::string& name, double value);
+  /// An empty optional as NaN.
+  void optional_number(const std::string& owner, const std::string& name,
+                       std::optional<double> value);
   void array(const std::string& owner, const std::string& name, std::span<const double> values);
   void text(const std::string& owner, const std::string& name, const std::string& value);
 
@@ -36,6 +40,9 @@ class RestartReader {
   explicit RestartReader(const io::Hdf5File& file) : file_(file) {}
 
   [[nodiscard]] double number(const std::string& owner, const std::string& name) const;
+  /// NaN as an empty optional.
+  [[nodiscard]] std::optional<double> optional_number(const std::string& owner,
+                                                      const std::string& name) const;
   /// The array "/<owner>/<name>"; it must hold `count` values unless kAnyCount.
   [[nodiscard]] std::vector<double> array(const std::string& owner, const std::string& name,
                                           std::size_t count = kAnyCount) const;

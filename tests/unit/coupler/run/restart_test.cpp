@@ -6,6 +6,7 @@
 // refused before anything in the folder changes.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <cstdio>
@@ -116,15 +117,18 @@ void expect_same_run(const fs::path& a, const fs::path& b) {
   const auto sb = nlohmann::json::parse(read_text(b / "summary.json"));
   EXPECT_EQ(sa["conservation"], sb["conservation"]);
   EXPECT_EQ(sa["steps"], sb["steps"]);
-  for (const char* detail : {"zones", "crossing", "activation"})  // CFDMP's
+  for (const char* detail : {"zones", "crossing", "activation", "steps_limited_by"})  // CFDMP's
     EXPECT_EQ(sa["details"].value(detail, nlohmann::json()),
               sb["details"].value(detail, nlohmann::json()))
         << detail;
-  if (sa["details"].contains("afdmp")) {  // the handoffs but for their wall times
-    auto ha = sa["details"]["afdmp"]["handoffs"], hb = sb["details"]["afdmp"]["handoffs"];
-    for (auto* list : {&ha, &hb})
-      for (auto& handoff : *list) handoff.erase("wall_s");
-    EXPECT_EQ(ha, hb);
+  if (sa["details"].contains("afdmp")) {  // the records but for their wall times
+    for (const char* records : {"handoffs", "phases"}) {
+      auto ra = sa["details"]["afdmp"][records], rb = sb["details"]["afdmp"][records];
+      for (auto* list : {&ra, &rb})
+        for (auto& record : *list) record.erase("wall_s");
+      EXPECT_EQ(ra, rb) << records;
+    }
+    EXPECT_EQ(sa["details"]["afdmp"]["transitions"], sb["details"]["afdmp"]["transitions"]);
     EXPECT_EQ(sa["details"]["afdmp"]["audit"], sb["details"]["afdmp"]["audit"]);
   }
   for (const auto& [solver, field] :
@@ -139,6 +143,19 @@ void expect_same_run(const fs::path& a, const fs::path& b) {
   // The series goes on: every earlier output is listed, none from 0 again.
   for (const char* series : {"fdm/cells.xmf", "mpm/particles.xmf"})
     EXPECT_EQ(read_text(a / series), read_text(b / series)) << series;
+}
+
+/// Copies `groups` of HDF5 file `from` into `to` (HDF5's own H5Ocopy).
+void copy_groups(const fs::path& from, const fs::path& to, const std::vector<std::string>& groups) {
+  const hid_t source = H5Fopen(from.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t target = H5Fopen(to.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(source, 0);
+  ASSERT_GE(target, 0);
+  for (const auto& group : groups)
+    EXPECT_GE(H5Ocopy(source, group.c_str(), target, group.c_str(), H5P_DEFAULT, H5P_DEFAULT), 0)
+        << group;
+  H5Fclose(target);
+  H5Fclose(source);
 }
 
 /// Every coupler checkpoint of the run in `out`, oldest first.
@@ -254,7 +271,8 @@ TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited
   char expected[64];
   std::snprintf(expected, sizeof expected, "fdm/checkpoints/checkpoint_%06d.h5",
                 static_cast<int>(header.read_attribute("/", "fdm_step")));
-  EXPECT_EQ(header.read_string_attribute("/", "fdm_path"), expected);  // relative to the run
+  EXPECT_EQ(header.read_string_attribute("/", "fdm_path"), expected);      // relative to the run
+  std::ofstream(relative / "summary.json") << R"({"status": "running"})";  // as if stopped
   const auto summary = run(scene, relative, {.restart = true, .overwrite = false});
   EXPECT_EQ(summary["status"], "completed");
   expect_same_run(dir / "checkpointed", relative);
@@ -338,6 +356,7 @@ TEST(CoupledRestart, A_restart_that_cannot_be_made_is_refused_and_the_folder_is_
   const auto scene = blast_scene("refused");
   const auto dir = scene.parent_path();
   run(scene, dir / "plain", {});
+  std::ofstream(dir / "plain" / "summary.json") << R"({"status": "running"})";  // as if stopped
   const std::string summary = read_text(dir / "plain" / "summary.json");
   const std::string gauges = read_text(dir / "plain" / "gauges.csv");
   const auto refused = [&](const fs::path& scene_path, const fs::path& out, RunArgs args) {
@@ -355,33 +374,58 @@ TEST(CoupledRestart, A_restart_that_cannot_be_made_is_refused_and_the_folder_is_
   EXPECT_EQ(read_text(dir / "plain" / "summary.json"), summary);
   EXPECT_EQ(read_text(dir / "plain" / "gauges.csv"), gauges);
 
-  // A checkpointed run, restarted with another scene text (a changed CFL).
+  // A run that completed: nothing to go on with.
   run(scene, dir / "checkpointed", {.checkpoint_every = 1});
   const std::string finished = read_text(dir / "checkpointed" / "summary.json");
-  const auto changed = blast_scene("refused-changed", {{"cfl: 0.3", "cfl: 0.25"}});
-  EXPECT_THAT(refused(changed, dir / "checkpointed", {.restart = true, .overwrite = false}),
-              HasSubstr("was written for another scene text (attribute scene_sha256)"));
+  EXPECT_THAT(refused(scene, dir / "checkpointed", {.restart = true, .overwrite = false}),
+              HasSubstr("has completed (summary.json: status completed)"));
   EXPECT_EQ(read_text(dir / "checkpointed" / "summary.json"), finished);
 
-  // A coupler file with its header alone: refused after the solvers' Restore, when the
-  // coupler reads its state; what the stopped run wrote is as it was.
+  // A stopped run restarted with another scene text (a changed CFL).
   const auto files = checkpoints_of(dir / "checkpointed");
+  const auto stopped = stopped_after(dir / "checkpointed", files.front(), dir / "stopped");
+  const std::string stopped_summary = read_text(stopped / "summary.json");
+  const auto changed = blast_scene("refused-changed", {{"cfl: 0.3", "cfl: 0.25"}});
+  EXPECT_THAT(refused(changed, stopped, {.restart = true, .overwrite = false}),
+              HasSubstr("was written for another scene text (attribute scene_sha256)"));
+  EXPECT_EQ(read_text(stopped / "summary.json"), stopped_summary);
+
+  // Coupler files the restart reads and refuses, before any solver restores and before
+  // gauges.csv is rewritten: what the stopped run wrote stays as it was.
+  const auto refused_in_place = [&](const fs::path& folder, const std::string& why) {
+    const std::vector<fs::path> kept_files = {"gauges.csv", "gauges.h5", "fdm/cells.xmf",
+                                              "mpm/particles.xmf"};
+    std::vector<std::string> before;
+    for (const auto& file : kept_files) before.push_back(read_text(folder / file));
+    const auto fdm_snapshots = snapshots(folder, "fdm");
+    EXPECT_THAT(refused(scene, folder, {.restart = true, .overwrite = false}), HasSubstr(why));
+    for (std::size_t i = 0; i < kept_files.size(); ++i)
+      EXPECT_EQ(read_text(folder / kept_files[i]), before[i]) << kept_files[i];
+    EXPECT_EQ(snapshots(folder, "fdm"), fdm_snapshots);
+    EXPECT_THAT(read_text(folder / "summary.json"), HasSubstr(why));  // why the restart failed
+  };
+  // Its header alone.
   const auto broken = stopped_after(dir / "checkpointed", files.front(), dir / "broken");
-  const auto kept = newest_checkpoint(broken, read_text(scene), 2);
-  fs::remove(kept.file);
+  const auto header = newest_checkpoint(broken, read_text(scene), 2);
+  fs::remove(header.file);
   {
-    io::Hdf5File header_only(kept.file, io::Hdf5File::Mode::create);
-    write_checkpoint_header(header_only, kept, read_text(scene), 2);
+    io::Hdf5File header_only(header.file, io::Hdf5File::Mode::create);
+    write_checkpoint_header(header_only, header, read_text(scene), 2);
   }
-  const std::string stopped_gauges = read_text(broken / "gauges.csv");
-  const std::string stopped_h5 = read_text(broken / "gauges.h5");
-  const auto stopped_snapshots = snapshots(broken, "fdm");
-  EXPECT_THAT(refused(scene, broken, {.restart = true, .overwrite = false}),
-              HasSubstr("has no array '/loop/initial'"));
-  EXPECT_EQ(read_text(broken / "gauges.csv"), stopped_gauges);
-  EXPECT_EQ(read_text(broken / "gauges.h5"), stopped_h5);
-  EXPECT_EQ(snapshots(broken, "fdm"), stopped_snapshots);
-  EXPECT_THAT(read_text(broken / "summary.json"), HasSubstr("has no array '/loop/initial'"));
+  refused_in_place(broken, "has no array '/loop/initial'");
+  // Its state whole, but no MPM file for the awake zone.
+  const auto unmatched = stopped_after(dir / "checkpointed", files.front(), dir / "unmatched");
+  auto without_mpm = newest_checkpoint(unmatched, read_text(scene), 2);
+  const fs::path original = without_mpm.file.string() + ".original";
+  fs::rename(without_mpm.file, original);
+  without_mpm.mpm.reset();
+  {
+    io::Hdf5File rewritten(without_mpm.file, io::Hdf5File::Mode::create);
+    write_checkpoint_header(rewritten, without_mpm, read_text(scene), 2);
+  }
+  copy_groups(original, without_mpm.file, {"/loop", "/step", "/gauges", "/activation"});
+  fs::remove(original);
+  refused_in_place(unmatched, "names no MPM checkpoint for an awake zone");
 }
 
 }  // namespace
