@@ -122,14 +122,13 @@ class AfdmpLoop {
         grid_(grid::UniformGrid::from_bounds(scene.domain.lower, scene.domain.upper,
                                              scene.domain.cells)) {
     for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
-    checkpoints_["every_outputs"] = options.checkpoint_every;
   }
 
   CoupledRunReport run() {
     const auto start = Clock::now();
     phase_start_ = start;
     const RunPosition at = options_.restart ? resume(*options_.restart) : begin();
-    const auto wall = [&] { return earlier_wall_seconds_ + seconds_since(start); };
+    const auto wall = [&] { return checkpoints_.earlier_wall_seconds() + seconds_since(start); };
     ProgressLine progress(std::cerr, scene_.time.end, "coupler", options_.progress);
     const double interval = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
     int outputs = at.outputs;
@@ -160,8 +159,7 @@ class AfdmpLoop {
       if (output_now) {
         write_output(outputs++);
         record_summary("running", wall());
-        const int every = options_.checkpoint_every;
-        if (every > 0 && (outputs - 1) % every == 0 && machine_.phase() != AfdmpPhase::done) {
+        if (checkpoints_.due(outputs, machine_.phase() != AfdmpPhase::done)) {
           checkpoint({.time = t, .step = n, .outputs = outputs}, wall());
           record_summary("running", wall());
         }
@@ -195,7 +193,7 @@ class AfdmpLoop {
                                   {"handoffs", handoffs_},
                                   {"audit", audit_.summary()},
                                   {"outputs", outputs_}});
-    summary_.set_detail("checkpoints", checkpoints_);
+    summary_.set_detail("checkpoints", checkpoints_.summary());
     summary_.set_detail("protocol", {{"fdm_outflow", outflow_.fdm},
                                      {"mpm_outflow", outflow_.mpm},
                                      {"fdm_material_import", settings_.material_import}});
@@ -204,7 +202,7 @@ class AfdmpLoop {
 
   /// False while a restart has not yet restored the run: its summary would hold nothing
   /// yet and must not replace the stopped run's files (gauges.h5 among them).
-  [[nodiscard]] bool summary_ready() const { return summary_ready_; }
+  [[nodiscard]] bool summary_ready() const { return checkpoints_.summary_ready(); }
 
   /// The peers that have not been shut down (for the final shutdown).
   [[nodiscard]] const std::set<std::string>& retired() const { return retired_; }
@@ -240,8 +238,10 @@ class AfdmpLoop {
   /// Restore, the solvers retired before it retired again, and gauges.csv as the
   /// checkpoint had it. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
+    double wall_before = 0;
     from.read_state([&](const RestartReader& in) {
       restore(in);
+      wall_before = in.number("afdmp", "wall_seconds");
       for (const auto& [peer, checkpoint] :
            {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}})
         if (checkpoint.has_value() == retired_.contains(peer))
@@ -258,10 +258,7 @@ class AfdmpLoop {
     gauges_.resume_files();
     for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
-    summary_ready_ = true;
-    checkpoints_["restarted_from"] = {
-        {"file", from.file.string()}, {"step", from.step}, {"time_s", from.time}};
-    checkpoints_["last"] = checkpoints_["restarted_from"];
+    checkpoints_.restarted(from, wall_before);
     Logger("coupler").info("restarted from ", from.file.string(), ": phase ",
                            phase_name(machine_.phase()), ", step ", from.step, ", t = ", from.time,
                            " s, ", from.outputs, " outputs written");
@@ -286,8 +283,7 @@ class AfdmpLoop {
         take_checkpoint(hub_, at, options_.out_dir, peers, options_.handoff_timeout, scene_text_,
                         grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
     for (const auto& peer : peers) contact_[peer] = Clock::now();
-    checkpoints_["last"] = {
-        {"file", taken.file.string()}, {"step", taken.step}, {"time_s", taken.time}};
+    checkpoints_.taken(taken);
     Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
                            " s: ", taken.file.string(), " (", seconds_since(start), " s)");
   }
@@ -343,7 +339,6 @@ class AfdmpLoop {
         in.refuse("was written with solvers " + std::string(now ? "without" : "with") + " '" +
                   name + "' (/afdmp/" + name + "); these " + (now ? "offer" : "lack") +
                   " it: restart with the solvers of that run");
-    earlier_wall_seconds_ = in.number("afdmp", "wall_seconds");
     machine_.restore(in);
     audit_.restore(in);
     gauges_.restore(in);
@@ -673,9 +668,7 @@ class AfdmpLoop {
   std::int64_t phase_steps_ = 0;
   Clock::time_point phase_start_;
   CoupledRunReport report_;
-  double earlier_wall_seconds_ = 0;  ///< a restarted run's wall time up to its checkpoint
-  nlohmann::json checkpoints_;       ///< summary.json details.checkpoints
-  bool summary_ready_ = !options_.restart;
+  CheckpointLog checkpoints_{options_.checkpoint_every, options_.restart.has_value()};
 };
 
 }  // namespace

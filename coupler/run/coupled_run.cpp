@@ -138,9 +138,7 @@ class Loop {
                 options.restart ? io::GaugeStart::restart : io::GaugeStart::fresh),
         hub_(hub),
         summary_(summary),
-        options_(options) {
-    checkpoints_["every_outputs"] = options.checkpoint_every;
-  }
+        options_(options) {}
 
   CoupledRunReport run() {
     const auto start = Clock::now();
@@ -150,7 +148,7 @@ class Loop {
     int outputs = at.outputs;
     double t = at.time;
     std::int64_t n = at.step;
-    const auto wall = [&] { return earlier_wall_seconds_ + seconds_since(start); };
+    const auto wall = [&] { return checkpoints_.earlier_wall_seconds() + seconds_since(start); };
     while (t < scene_.time.end * (1 - 1e-12)) {
       if (n >= scene_.time.max_steps)
         throw Error("scene '" + scene_.name +
@@ -181,8 +179,7 @@ class Loop {
         exchange({.advance = false, .time = t, .audit = true});
         write_output(outputs++);
         record_summary("running", wall());
-        const int every = options_.checkpoint_every;
-        if (every > 0 && (outputs - 1) % every == 0 && t < scene_.time.end * (1 - 1e-12)) {
+        if (checkpoints_.due(outputs, t < scene_.time.end * (1 - 1e-12))) {
           checkpoint({.time = t, .step = n, .outputs = outputs}, wall());
           record_summary("running", wall());
         }
@@ -198,7 +195,7 @@ class Loop {
   [[nodiscard]] std::string face_drain_text() const { return step_.face_drain_text(); }
   /// False while a restart has not yet restored the run: its summary would hold nothing
   /// yet and must not replace the stopped run's files (gauges.h5 among them).
-  [[nodiscard]] bool summary_ready() const { return summary_ready_; }
+  [[nodiscard]] bool summary_ready() const { return checkpoints_.summary_ready(); }
 
   void record_summary(const std::string& status, double wall) {
     const Totals now = current();
@@ -238,7 +235,7 @@ class Loop {
                                    {"mpm_advance_seconds", report_.mpm_advance_seconds},
                                    {"slower_advance_seconds", report_.max_advance_seconds},
                                    {"coupling_overhead_share", overhead}});
-    summary_.set_detail("checkpoints", checkpoints_);
+    summary_.set_detail("checkpoints", checkpoints_.summary());
     summary_.set_detail("steps_limited_by", {{"fdm", report_.steps_limited_by_fdm},
                                              {"mpm", report_.steps_limited_by_mpm},
                                              {"strip", report_.steps_limited_by_strip}});
@@ -260,8 +257,10 @@ class Loop {
   /// brings back the strip cells, face mass, proposals and audit totals of t^n without
   /// changing either solver. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
+    double wall_before = 0;
     from.read_state([&](const RestartReader& in) {
       restore(in);
+      wall_before = in.number("loop", "wall_seconds");
       if (from.mpm.has_value() == watch_.dormant())
         in.refuse(std::string(watch_.dormant() ? "names an MPM checkpoint for a sleeping zone"
                                                : "names no MPM checkpoint for an awake zone") +
@@ -273,10 +272,7 @@ class Loop {
     report_.time = from.time;
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
     exchange({.advance = false, .time = from.time, .audit = true});
-    summary_ready_ = true;
-    checkpoints_["restarted_from"] = {
-        {"file", from.file.string()}, {"step", from.step}, {"time_s", from.time}};
-    checkpoints_["last"] = checkpoints_["restarted_from"];
+    checkpoints_.restarted(from, wall_before);
     Logger("coupler").info("restarted from ", from.file.string(), ": step ", from.step,
                            ", t = ", from.time, " s, ", from.outputs, " outputs written");
     return from.position();
@@ -289,8 +285,7 @@ class Loop {
     const auto taken =
         take_checkpoint(hub_, at, options_.out_dir, peers(), options_.handoff_timeout, scene_text_,
                         grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
-    checkpoints_["last"] = {
-        {"file", taken.file.string()}, {"step", taken.step}, {"time_s", taken.time}};
+    checkpoints_.taken(taken);
     Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
                            " s: ", taken.file.string(), " (", seconds_since(start), " s)");
   }
@@ -335,7 +330,6 @@ class Loop {
     report_.steps_limited_by_fdm = static_cast<std::int64_t>(count("steps_limited_by_fdm"));
     report_.steps_limited_by_mpm = static_cast<std::int64_t>(count("steps_limited_by_mpm"));
     report_.steps_limited_by_strip = static_cast<std::int64_t>(count("steps_limited_by_strip"));
-    earlier_wall_seconds_ = in.number("loop", "wall_seconds");
     step_seconds_ = in.number("loop", "step_seconds");
     report_.fdm_advance_seconds = in.number("loop", "fdm_advance_seconds");
     report_.mpm_advance_seconds = in.number("loop", "mpm_advance_seconds");
@@ -471,10 +465,8 @@ class Loop {
   Totals initial_;
   CoupledRunReport report_;
   double step_seconds_ = 0;
-  double earlier_wall_seconds_ = 0;  ///< a restarted run's wall time up to its checkpoint
-  bool summary_ready_ = !options_.restart;
-  nlohmann::json checkpoints_;  ///< summary.json details.checkpoints
-  bool mpm_slower_ = false;     ///< the MPM's last Advance took longer than the FDM's
+  CheckpointLog checkpoints_{options_.checkpoint_every, options_.restart.has_value()};
+  bool mpm_slower_ = false;  ///< the MPM's last Advance took longer than the FDM's
   std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
   double injected_mass_ = 0, deposited_mass_ = 0;
 };

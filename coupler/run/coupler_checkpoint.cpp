@@ -44,6 +44,25 @@ std::optional<SolverCheckpoint> read_solver(const io::Hdf5File& file, const std:
 
 }  // namespace
 
+CheckpointLog::CheckpointLog(int every, bool restarting)
+    : every_(every), summary_ready_(!restarting), summary_{{"every_outputs", every}} {}
+
+bool CheckpointLog::due(int outputs, bool run_goes_on) const {
+  return every_ > 0 && (outputs - 1) % every_ == 0 && run_goes_on;
+}
+
+void CheckpointLog::taken(const CouplerCheckpoint& checkpoint) {
+  summary_["last"] = {
+      {"file", checkpoint.file.string()}, {"step", checkpoint.step}, {"time_s", checkpoint.time}};
+}
+
+void CheckpointLog::restarted(const CouplerCheckpoint& from, double wall_seconds) {
+  taken(from);
+  summary_["restarted_from"] = summary_["last"];
+  earlier_wall_seconds_ = wall_seconds;
+  summary_ready_ = true;
+}
+
 int grid_dimension(const config::Scene& scene) {
   int dimension = 0;
   for (const int cells : scene.domain.cells) dimension += cells > 1 ? 1 : 0;

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,6 +65,31 @@ struct CouplerCheckpoint {
 
 /// The axes with more than one cell (a checkpoint's `dimension`).
 [[nodiscard]] int grid_dimension(const config::Scene& scene);
+
+/// What a run loop keeps of its checkpoints: when one is due, summary.json's
+/// details.checkpoints, and, in a restarted run, the wall time before it and whether
+/// the run is restored far enough for its summary to replace the stopped run's.
+class CheckpointLog {
+ public:
+  /// `every`: --checkpoint-every (0: none); `restarting`: --restart.
+  CheckpointLog(int every, bool restarting);
+
+  /// After `outputs` outputs (output 0 included), when the run goes on: one is due.
+  [[nodiscard]] bool due(int outputs, bool run_goes_on) const;
+  void taken(const CouplerCheckpoint& checkpoint);
+  /// The run is restored from `from`; `wall_seconds` it had run before.
+  void restarted(const CouplerCheckpoint& from, double wall_seconds);
+
+  [[nodiscard]] double earlier_wall_seconds() const { return earlier_wall_seconds_; }
+  [[nodiscard]] bool summary_ready() const { return summary_ready_; }
+  [[nodiscard]] const nlohmann::json& summary() const { return summary_; }
+
+ private:
+  int every_;
+  bool summary_ready_;
+  double earlier_wall_seconds_ = 0;
+  nlohmann::json summary_;
+};
 
 /// <out_dir>/checkpoints/coupler_NNNNNN.h5 of `step`.
 [[nodiscard]] std::filesystem::path coupler_checkpoint_file(const std::filesystem::path& out_dir,

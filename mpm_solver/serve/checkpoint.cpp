@@ -10,6 +10,7 @@
 #include "cosim/serving/protocol_error.hpp"
 #include "cosim/serving/sha256.hpp"
 #include "mpm_solver/serve/checkpoint_file.hpp"
+#include "mpm_solver/serve/write_output.hpp"
 
 namespace mpfd::mpm {
 namespace {
@@ -134,15 +135,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     }
     zone.start_time = back.clock.start_time;
     zone.dormant = false;
-    // The restored run numbers its snapshots on (from 0 again for a checkpoint before the first).
-    if (!zone.output_dir.empty() &&
-        (zone.snapshots || !io::SnapshotWriter::empty_history(back.snapshot_history))) {
-      if (!zone.snapshots) {
-        std::filesystem::create_directories(zone.output_dir);
-        zone.snapshots.emplace(zone.output_dir, zone.solver.grid());
-      }
-      zone.snapshots->resume(back.snapshot_history);
-    }
+    resume_snapshots(zone, back.snapshot_history);
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {

@@ -31,4 +31,14 @@ cosim::v1::OutputWritten write_output(ServedZone& zone, const cosim::v1::WriteOu
   return written;
 }
 
+void resume_snapshots(ServedZone& zone, const std::string& history) {
+  if (zone.output_dir.empty() || (io::SnapshotWriter::empty_history(history) && !zone.snapshots))
+    return;
+  if (!zone.snapshots) {
+    std::filesystem::create_directories(zone.output_dir);
+    zone.snapshots.emplace(zone.output_dir, zone.solver.grid());
+  }
+  zone.snapshots->resume(history);
+}
+
 }  // namespace mpfd::mpm

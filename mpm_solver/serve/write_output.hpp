@@ -15,4 +15,10 @@ namespace mpfd::mpm {
 [[nodiscard]] cosim::v1::OutputWritten write_output(ServedZone& zone,
                                                     const cosim::v1::WriteOutput& request);
 
+/// Continues a checkpoint's snapshot series `history` in Setup.output_dir
+/// (io::SnapshotWriter::resume), so that a restored zone numbers its snapshots on (from 0
+/// again for a checkpoint taken before the first). Nothing without an output_dir. Throws
+/// mpfd::Error.
+void resume_snapshots(ServedZone& zone, const std::string& history);
+
 }  // namespace mpfd::mpm
