@@ -158,11 +158,10 @@ class AfdmpLoop {
       handle(machine_.next(observation_), t, n);
       if (output_now) {
         write_output(outputs++);
-        record_summary("running", wall());
-        if (checkpoints_.due(outputs, machine_.phase() != AfdmpPhase::done)) {
+        // Before the summary, which then names it (one rewrite of summary.json and gauges.h5).
+        if (checkpoints_.due(outputs, machine_.phase() != AfdmpPhase::done))
           checkpoint({.time = t, .step = n, .outputs = outputs}, wall());
-          record_summary("running", wall());
-        }
+        record_summary("running", wall());
       }
       keep_idle_alive();
       progress.update(n, t);

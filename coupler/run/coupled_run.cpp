@@ -178,11 +178,10 @@ class Loop {
         hub_.set_clock(static_cast<std::uint64_t>(n), t);
         exchange({.advance = false, .time = t, .audit = true});
         write_output(outputs++);
-        record_summary("running", wall());
-        if (checkpoints_.due(outputs, t < scene_.time.end * (1 - 1e-12))) {
+        // Before the summary, which then names it (one rewrite of summary.json and gauges.h5).
+        if (checkpoints_.due(outputs, t < scene_.time.end * (1 - 1e-12)))
           checkpoint({.time = t, .step = n, .outputs = outputs}, wall());
-          record_summary("running", wall());
-        }
+        record_summary("running", wall());
       }
       progress.update(n, t);
     }

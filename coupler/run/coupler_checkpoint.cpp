@@ -63,12 +63,6 @@ void CheckpointLog::restarted(const CouplerCheckpoint& from, double wall_seconds
   summary_ready_ = true;
 }
 
-int grid_dimension(const config::Scene& scene) {
-  int dimension = 0;
-  for (const int cells : scene.domain.cells) dimension += cells > 1 ? 1 : 0;
-  return dimension;
-}
-
 fs::path coupler_checkpoint_file(const fs::path& out_dir, std::int64_t step) {
   char name[40];
   std::snprintf(name, sizeof name, "coupler_%06lld.h5", static_cast<long long>(step));
@@ -100,8 +94,8 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
   const fs::path summary = out_dir / "summary.json";
   if (fs::exists(summary)) {
     std::ifstream in(summary);
-    const auto status = nlohmann::json::parse(in, nullptr, false).value("status", "");
-    if (status == "completed")
+    const auto parsed = nlohmann::json::parse(in, nullptr, false);  // unreadable: not completed
+    if (parsed.is_object() && parsed.value("status", "") == "completed")
       throw Error("--restart: the run in '" + out_dir.string() +
                   "' has completed (summary.json: status completed); there is nothing to go on "
                   "with. To run it again, run without --restart, with --overwrite");

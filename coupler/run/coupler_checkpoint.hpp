@@ -27,7 +27,6 @@
 #include <string>
 #include <vector>
 
-#include "common/config/scene.hpp"
 #include "common/io/hdf5_file.hpp"
 #include "cosim/hub.hpp"
 #include "coupler/run/restart_file.hpp"
@@ -62,9 +61,6 @@ struct CouplerCheckpoint {
   /// Opens `file` and hands the coupler's state in it to `restore`.
   void read_state(const std::function<void(const RestartReader&)>& restore) const;
 };
-
-/// The axes with more than one cell (a checkpoint's `dimension`).
-[[nodiscard]] int grid_dimension(const config::Scene& scene);
 
 /// What a run loop keeps of its checkpoints: when one is due, summary.json's
 /// details.checkpoints, and, in a restarted run, the wall time before it and whether

@@ -13,6 +13,7 @@
 #include "coupler/run/afdmp_layout.hpp"
 #include "coupler/run/afdmp_run.hpp"
 #include "coupler/run/gauges.hpp"
+#include "coupler/run/session.hpp"
 #include "coupler/run/zone_layout.hpp"
 #include "fdm_solver/serve/serve.hpp"
 #include "mpm_solver/serve/serve.hpp"

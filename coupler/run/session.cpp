@@ -17,16 +17,20 @@ std::string make_run_id() {
   return text;
 }
 
+int grid_dimension(const config::Scene& scene) {
+  int dimension = 0;
+  for (const int cells : scene.domain.cells) dimension += cells > 1 ? 1 : 0;
+  return dimension;
+}
+
 v1::UniformGrid wire_grid(const config::Scene& scene) {
   v1::UniformGrid grid;
-  int dimension = 0;
   for (int a = 0; a < 3; ++a) {
     grid.add_origin(scene.domain.lower[a]);
     grid.add_spacing((scene.domain.upper[a] - scene.domain.lower[a]) / scene.domain.cells[a]);
     grid.add_cells(static_cast<std::uint64_t>(scene.domain.cells[a]));
-    dimension += scene.domain.cells[a] > 1 ? 1 : 0;
   }
-  grid.set_dimension(static_cast<std::uint32_t>(dimension));
+  grid.set_dimension(static_cast<std::uint32_t>(grid_dimension(scene)));
   return grid;
 }
 

@@ -29,7 +29,10 @@ namespace v1 = cosim::v1;
 /// 16 hex digits, new for every run (proto §5: HelloAck.run_id).
 [[nodiscard]] std::string make_run_id();
 
-/// The scene's whole grid as a Setup zone grid (dimension = axes with more than one cell).
+/// The axes of the scene's grid with more than one cell.
+[[nodiscard]] int grid_dimension(const config::Scene& scene);
+
+/// The scene's whole grid as a Setup zone grid (dimension: grid_dimension).
 [[nodiscard]] v1::UniformGrid wire_grid(const config::Scene& scene);
 
 /// True when the solver's Hello lists `capability`.
