@@ -237,10 +237,8 @@ class AfdmpLoop {
   /// Restore, the solvers retired before it retired again, and gauges.csv as the
   /// checkpoint had it. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
-    double wall_before = 0;
     from.read_state([&](const RestartReader& in) {
       restore(in);
-      wall_before = in.number("afdmp", "wall_seconds");
       for (const auto& [peer, checkpoint] :
            {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}})
         if (checkpoint.has_value() == retired_.contains(peer))
@@ -257,7 +255,7 @@ class AfdmpLoop {
     gauges_.resume_files();
     for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
-    checkpoints_.restarted(from, wall_before);
+    checkpoints_.restarted(from);
     Logger("coupler").info("restarted from ", from.file.string(), ": phase ",
                            phase_name(machine_.phase()), ", step ", from.step, ", t = ", from.time,
                            " s, ", from.outputs, " outputs written");
@@ -278,16 +276,16 @@ class AfdmpLoop {
     std::vector<std::string> peers;
     for (const auto& peer : kAfdmpPeers)
       if (!retired_.contains(peer)) peers.push_back(peer);
-    const auto taken =
-        take_checkpoint(hub_, at, options_.out_dir, peers, options_.handoff_timeout, scene_text_,
-                        grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
+    const auto taken = take_checkpoint(
+        hub_, at, wall, options_.out_dir, peers, options_.handoff_timeout, scene_text_,
+        grid_dimension(scene_), [&](RestartWriter& out) { save(out); });
     for (const auto& peer : peers) contact_[peer] = Clock::now();
     checkpoints_.taken(taken);
     Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
                            " s: ", taken.file.string(), " (", seconds_since(start), " s)");
   }
 
-  void save(RestartWriter& out, double wall) const {
+  void save(RestartWriter& out) const {
     out.text("afdmp", "holder", holder_);
     out.number("afdmp", "dt", dt_);
     out.number("afdmp", "fdm_retired", retired_.contains("fdm") ? 1 : 0);
@@ -300,7 +298,6 @@ class AfdmpLoop {
     out.number("afdmp", "phase_time", phase_time_);
     out.number("afdmp", "phase_steps", static_cast<double>(phase_steps_));
     out.number("afdmp", "phase_wall_seconds", seconds_since(phase_start_));
-    out.number("afdmp", "wall_seconds", wall);
     // What the solvers offered decides the audit's outflow and the handoffs' material import.
     out.number("afdmp", "fdm_outflow", outflow_.fdm ? 1 : 0);
     out.number("afdmp", "mpm_outflow", outflow_.mpm ? 1 : 0);

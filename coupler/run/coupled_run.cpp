@@ -256,10 +256,8 @@ class Loop {
   /// brings back the strip cells, face mass, proposals and audit totals of t^n without
   /// changing either solver. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
-    double wall_before = 0;
     from.read_state([&](const RestartReader& in) {
       restore(in);
-      wall_before = in.number("loop", "wall_seconds");
       if (from.mpm.has_value() == watch_.dormant())
         in.refuse(std::string(watch_.dormant() ? "names an MPM checkpoint for a sleeping zone"
                                                : "names no MPM checkpoint for an awake zone") +
@@ -271,7 +269,7 @@ class Loop {
     report_.time = from.time;
     hub_.set_clock(static_cast<std::uint64_t>(from.step), from.time);
     exchange({.advance = false, .time = from.time, .audit = true});
-    checkpoints_.restarted(from, wall_before);
+    checkpoints_.restarted(from);
     Logger("coupler").info("restarted from ", from.file.string(), ": step ", from.step,
                            ", t = ", from.time, " s, ", from.outputs, " outputs written");
     return from.position();
@@ -281,15 +279,15 @@ class Loop {
   void checkpoint(const RunPosition& at, double wall) {
     const auto start = Clock::now();
     if (watch_.dormant()) keep_mpm_alive();  // it takes no Checkpoint, so no message meanwhile
-    const auto taken =
-        take_checkpoint(hub_, at, options_.out_dir, peers(), options_.handoff_timeout, scene_text_,
-                        grid_dimension(scene_), [&](RestartWriter& out) { save(out, wall); });
+    const auto taken = take_checkpoint(
+        hub_, at, wall, options_.out_dir, peers(), options_.handoff_timeout, scene_text_,
+        grid_dimension(scene_), [&](RestartWriter& out) { save(out); });
     checkpoints_.taken(taken);
     Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
                            " s: ", taken.file.string(), " (", seconds_since(start), " s)");
   }
 
-  void save(RestartWriter& out, double wall) const {
+  void save(RestartWriter& out) const {
     save_totals(out, "loop", "initial", initial_);
     save_totals(out, "loop", "switch", switch_);
     out.text("loop", "audit_switch", audit_switch_.dump());
@@ -302,7 +300,6 @@ class Loop {
         {"steps_limited_by_fdm", static_cast<double>(report_.steps_limited_by_fdm)},
         {"steps_limited_by_mpm", static_cast<double>(report_.steps_limited_by_mpm)},
         {"steps_limited_by_strip", static_cast<double>(report_.steps_limited_by_strip)},
-        {"wall_seconds", wall},
         {"step_seconds", step_seconds_},
         {"fdm_advance_seconds", report_.fdm_advance_seconds},
         {"mpm_advance_seconds", report_.mpm_advance_seconds},

@@ -56,10 +56,10 @@ void CheckpointLog::taken(const CouplerCheckpoint& checkpoint) {
       {"file", checkpoint.file.string()}, {"step", checkpoint.step}, {"time_s", checkpoint.time}};
 }
 
-void CheckpointLog::restarted(const CouplerCheckpoint& from, double wall_seconds) {
+void CheckpointLog::restarted(const CouplerCheckpoint& from) {
   taken(from);
   summary_["restarted_from"] = summary_["last"];
-  earlier_wall_seconds_ = wall_seconds;
+  earlier_wall_seconds_ = from.wall_seconds;
   summary_ready_ = true;
 }
 
@@ -78,6 +78,7 @@ void write_checkpoint_header(io::Hdf5File& file, const CouplerCheckpoint& checkp
   file.write_attribute("/", "step", checkpoint.step);
   file.write_attribute("/", "time", checkpoint.time);
   file.write_attribute("/", "outputs", std::int64_t{checkpoint.outputs});
+  file.write_attribute("/", "wall_seconds", checkpoint.wall_seconds);
   const fs::path out_dir = checkpoint.file.parent_path().parent_path();  // <out>/checkpoints/
   write_solver(file, "fdm", checkpoint.fdm, out_dir);
   write_solver(file, "mpm", checkpoint.mpm, out_dir);
@@ -146,6 +147,7 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
                                .step = static_cast<std::int64_t>(file.read_attribute("/", "step")),
                                .time = file.read_attribute("/", "time"),
                                .outputs = static_cast<int>(file.read_attribute("/", "outputs")),
+                               .wall_seconds = file.read_attribute("/", "wall_seconds"),
                                .fdm = read_solver(file, "fdm", out_dir),
                                .mpm = read_solver(file, "mpm", out_dir)};
   if (!checkpoint.fdm && !checkpoint.mpm)
@@ -158,14 +160,15 @@ void CouplerCheckpoint::read_state(const std::function<void(const RestartReader&
   restore(RestartReader(h5));
 }
 
-CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, const fs::path& out_dir,
-                                  const std::vector<std::string>& peers,
+CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double wall_seconds,
+                                  const fs::path& out_dir, const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,
                                   int dimension, const std::function<void(RestartWriter&)>& save) {
   CouplerCheckpoint taken{.file = coupler_checkpoint_file(out_dir, at.step),
                           .step = at.step,
                           .time = at.time,
-                          .outputs = at.outputs};
+                          .outputs = at.outputs,
+                          .wall_seconds = wall_seconds};
   // All at once: each solver writes while the others do, and none waits idle meanwhile.
   for (const auto& peer : peers) {
     cosim::Message message;

@@ -12,7 +12,7 @@
 //
 // The file: attributes `format` "mpfd-coupler-checkpoint", `format_version`,
 // `scene_sha256` (of the scene text: a restart refuses another scene),
-// `dimension`, `step`, `time` [s], `outputs` (written so far), and per solver
+// `dimension`, `step`, `time` [s], `outputs` (written so far), `wall_seconds`, and per solver
 // `<name>_path` (relative to the output folder when it lies in it, so the folder
 // may move), `<name>_step` ("" and 0 for a sleeping zone); then the groups
 // of restart_file.hpp (CFDMP: "/loop", "/step", "/gauges", "/activation";
@@ -52,9 +52,10 @@ struct RunPosition {
 /// A coupler checkpoint's header.
 struct CouplerCheckpoint {
   std::filesystem::path file{};
-  std::int64_t step = 0;                         ///< coupled steps done
-  double time = 0;                               ///< t^n [s]
-  int outputs = 0;                               ///< outputs written (the next one's index)
+  std::int64_t step = 0;    ///< coupled steps done
+  double time = 0;          ///< t^n [s]
+  int outputs = 0;          ///< outputs written (the next one's index)
+  double wall_seconds = 0;  ///< the run's wall time up to it [s] (a restart's timings add it)
   std::optional<SolverCheckpoint> fdm{}, mpm{};  ///< none: the solver was asleep
 
   [[nodiscard]] RunPosition position() const { return {time, step, outputs}; }
@@ -73,8 +74,8 @@ class CheckpointLog {
   /// After `outputs` outputs (output 0 included), when the run goes on: one is due.
   [[nodiscard]] bool due(int outputs, bool run_goes_on) const;
   void taken(const CouplerCheckpoint& checkpoint);
-  /// The run is restored from `from`; `wall_seconds` it had run before.
-  void restarted(const CouplerCheckpoint& from, double wall_seconds);
+  /// The run is restored from `from`.
+  void restarted(const CouplerCheckpoint& from);
 
   [[nodiscard]] double earlier_wall_seconds() const { return earlier_wall_seconds_; }
   [[nodiscard]] bool summary_ready() const { return summary_ready_; }
@@ -107,12 +108,12 @@ void remove_checkpoints(const std::filesystem::path& out_dir);
 [[nodiscard]] CouplerCheckpoint newest_checkpoint(const std::filesystem::path& out_dir,
                                                   const std::string& scene_text, int dimension);
 
-/// Takes a coupled checkpoint at `at`: each of `peers` writes its own (all at once,
-/// waiting `timeout` for each: a large grid outlasts a step's reply), then `save` writes
-/// the coupler's state after the header into <out_dir>/checkpoints/coupler_NNNNNN.h5,
+/// Takes a coupled checkpoint at `at`, `wall_seconds` into the run: each of `peers` writes its own
+/// (all at once, waiting `timeout` for each: a large grid outlasts a step's reply), then `save`
+/// writes the coupler's state after the header into <out_dir>/checkpoints/coupler_NNNNNN.h5,
 /// written beside it and renamed into place last. Returns what was written. Throws
 /// mpfd::Error naming a solver that answers otherwise.
-CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at,
+CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double wall_seconds,
                                   const std::filesystem::path& out_dir,
                                   const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,
