@@ -29,8 +29,7 @@ int main(int argc, char** argv) {
   int checkpoint_every = 0;
   run->add_option("--checkpoint-every", checkpoint_every,
                   "checkpoint the solvers and the coupler after every K-th output "
-                  "(<out>/checkpoints, fdm/checkpoints, mpm/checkpoints; afdmp: in its FDM and "
-                  "FSI phases); 0: none")
+                  "(<out>/checkpoints, fdm/checkpoints, mpm/checkpoints); 0: none")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--restart", launch.restart,

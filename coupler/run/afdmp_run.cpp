@@ -237,20 +237,29 @@ class AfdmpLoop {
   /// Restore, the solvers retired before it retired again, and gauges.csv as the
   /// checkpoint had it. Nothing in the folder changes before the checks pass.
   RunPosition resume(const CouplerCheckpoint& from) {
+    // Retired before the checkpoint; this run's solvers are shut down only once it is restored
+    // (a refused restart shuts down every solver it started).
+    std::set<std::string> retired;
     from.read_state([&](const RestartReader& in) {
-      restore(in);
+      retired = restore(in);
       for (const auto& [peer, checkpoint] :
-           {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}})
-        if (checkpoint.has_value() == retired_.contains(peer))
-          in.refuse(std::string("names ") + (checkpoint ? "a" : "no") + " checkpoint of solver '" +
-                    peer + "', which " + (checkpoint ? "was" : "was not") + " retired (attribute " +
-                    peer + "_path, /afdmp/" + peer + "_retired)");
+           {std::pair{"fdm", from.fdm}, std::pair{"mpm", from.mpm}}) {
+        const std::string name = peer;
+        if (checkpoint.has_value() != checkpointed(name, retired))
+          in.refuse("names " + std::string(checkpoint ? "a" : "no") + " checkpoint of solver '" +
+                    name + "', which " +
+                    (retired.contains(name)        ? "was retired"
+                     : checkpointed(name, retired) ? "holds state"
+                                                   : "holds only its Setup's state") +
+                    " in phase " + std::string(phase_name(machine_.phase())) + " (attribute " +
+                    name + "_path, /afdmp/" + name + "_retired, /phases)");
+      }
     });
     restore_solvers(hub_, from, options_.handoff_timeout);
     report_.steps = from.step;
     report_.time = from.time;
     for (const auto& peer : kAfdmpPeers)
-      if (retired_.contains(peer))
+      if (retired.contains(peer))
         retire(peer, "retired before the checkpoint this run restarts from");
     gauges_.resume_files();
     for (const auto& peer : kAfdmpPeers) contact_[peer] = Clock::now();
@@ -262,20 +271,24 @@ class AfdmpLoop {
     return from.position();
   }
 
-  /// In the FDM and FSI phases, whose whole state the solvers hold: each solver still
-  /// needed checkpoints, then the coupler's file is renamed into place last. The MPM
-  /// detonation and the 1D stage are short and hold state in the coupler: none there.
-  void checkpoint(const RunPosition& at, double wall) {
+  /// Whether `peer` writes a checkpoint now, with `retired` shut down: not once retired, and
+  /// not the FDM before the blast is handed to it (in the MPM detonation and the 1D stage
+  /// it holds only its Setup's state, which a restart's Setup makes again).
+  [[nodiscard]] bool checkpointed(const std::string& peer,
+                                  const std::set<std::string>& retired) const {
     const AfdmpPhase phase = machine_.phase();
-    if (phase != AfdmpPhase::fdm_blast && phase != AfdmpPhase::mpm_fsi) {
-      Logger("coupler").info("no checkpoint at step ", at.step, ": phase ", phase_name(phase),
-                             " is not checkpointed (only fdm_blast and mpm_fsi are)");
-      return;
-    }
+    const bool before_fdm =
+        phase == AfdmpPhase::mpm_detonation || phase == AfdmpPhase::spherical_detonation;
+    return !retired.contains(peer) && !(peer == "fdm" && before_fdm);
+  }
+
+  /// Each solver that holds state checkpoints, then the coupler's file (with the 1D stage's
+  /// particles while it runs) is renamed into place last.
+  void checkpoint(const RunPosition& at, double wall) {
     const auto start = Clock::now();
     std::vector<std::string> peers;
     for (const auto& peer : kAfdmpPeers)
-      if (!retired_.contains(peer)) peers.push_back(peer);
+      if (checkpointed(peer, retired_)) peers.push_back(peer);
     const auto taken = take_checkpoint(
         hub_, at, wall, options_.out_dir, peers, options_.handoff_timeout, scene_text_,
         grid_dimension(scene_), [&](RestartWriter& out) { save(out); });
@@ -305,17 +318,20 @@ class AfdmpLoop {
     machine_.save(out);
     audit_.save(out);
     gauges_.save(out);
+    if (holder_ == "spherical") stage_->save(out);
   }
 
-  void restore(const RestartReader& in) {
+  /// The coupler's state from `in`; returns the solvers retired before the checkpoint.
+  [[nodiscard]] std::set<std::string> restore(const RestartReader& in) {
     const std::string holder = in.text("afdmp", "holder");
-    if (holder != "fdm" && holder != "mpm")
-      in.refuse("holds '" + holder + "' as the state's holder; a checkpoint has 'fdm' or 'mpm'");
+    if (holder != "fdm" && holder != "mpm" && holder != "spherical")
+      in.refuse("holds '" + holder +
+                "' as the state's holder (/afdmp/holder); expected 'fdm', 'mpm' or 'spherical'");
     holder_ = holder;
     dt_ = in.number("afdmp", "dt");
-    retired_.clear();
+    std::set<std::string> retired;
     for (const auto& peer : kAfdmpPeers)
-      if (in.number("afdmp", peer + "_retired") != 0) retired_.insert(peer);
+      if (in.number("afdmp", peer + "_retired") != 0) retired.insert(peer);
     placeholder_ = restored_conserved(in, "afdmp", "placeholder");
     phases_ = in.json("afdmp", "phases");
     transitions_ = in.json("afdmp", "transitions");
@@ -338,6 +354,11 @@ class AfdmpLoop {
     machine_.restore(in);
     audit_.restore(in);
     gauges_.restore(in);
+    if (holder_ == "spherical") {
+      stage_.emplace(scene_);
+      stage_->restore(in);
+    }
+    return retired;
   }
 
   /// One step of the current phase from t to t_next.

@@ -258,6 +258,10 @@ class Loop {
   RunPosition resume(const CouplerCheckpoint& from) {
     from.read_state([&](const RestartReader& in) {
       restore(in);
+      if (!from.fdm)
+        in.refuse(
+            "names no FDM checkpoint (attribute fdm_path): a CFDMP run's FDM zone holds state "
+            "throughout");
       if (from.mpm.has_value() == watch_.dormant())
         in.refuse(std::string(watch_.dormant() ? "names an MPM checkpoint for a sleeping zone"
                                                : "names no MPM checkpoint for an awake zone") +

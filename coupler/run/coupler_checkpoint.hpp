@@ -2,9 +2,10 @@
 // A coupled run's checkpoint (`coupler run --checkpoint-every K`,
 // docs/coupler.md "Checkpoint and restart"). After every K-th output (CFDMP:
 // after its exchange, when neither solver holds a half-done step; AFDMP: in
-// the FDM and FSI phases), the coupler asks each solver that holds state for
-// its own checkpoint (proto/README.md §8; a sleeping MPM zone is still its
-// Setup's state, a retired solver has none) and then writes its own state to
+// any phase), the coupler asks each solver that holds state for its own
+// checkpoint (proto/README.md §8; a sleeping MPM zone, or AFDMP's FDM before the
+// blast is handed to it, is still its Setup's state; a retired solver has none)
+// and then writes its own state (AFDMP's 1D stage included) to
 // <out>/checkpoints/coupler_NNNNNN.h5 (NNNNNN = the coupled step), renamed into
 // place last: a coupler file names a complete set. `coupler run --restart`
 // continues from the newest one: Setup, Restore of each solver's file, the
@@ -16,7 +17,8 @@
 // `<name>_path` (relative to the output folder when it lies in it, so the folder
 // may move), `<name>_step` ("" and 0 for a sleeping zone); then the groups
 // of restart_file.hpp (CFDMP: "/loop", "/step", "/gauges", "/activation";
-// AFDMP: "/afdmp", "/audit", "/phases", "/gauges", "/activation").
+// AFDMP: "/afdmp", "/audit", "/phases", "/gauges", "/activation", and "/stage"
+// while the 1D stage runs).
 
 #include <chrono>
 #include <cstdint>

@@ -13,6 +13,7 @@
 #include "common/config/scene.hpp"
 #include "common/grid/uniform_grid.hpp"
 #include "coupler/remap/shells_from_particles.hpp"
+#include "coupler/run/restart_file.hpp"
 #include "mpm_solver/spherical/spherical_mpm.hpp"
 
 namespace mpfd::coupler {
@@ -43,6 +44,11 @@ class SphericalStage {
   /// The particles as radial shells with scene material indices (S step (1)).
   [[nodiscard]] remap::RadialShells shells() const;
   [[nodiscard]] mpm::spherical::SphericalTotals totals() const { return mpm_.totals(); }
+
+  /// The 1D particles and clock as "/stage" of a coupled checkpoint
+  /// (spherical_stage_checkpoint.cpp), and back into a stage built from the same scene.
+  void save(RestartWriter& out) const;
+  void restore(const RestartReader& in);
 
  private:
   const config::Scene& scene_;

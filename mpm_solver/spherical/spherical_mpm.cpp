@@ -118,4 +118,29 @@ SphericalTotals SphericalMpm::totals() const {
   return {sphere * sum.mass, sphere * sum.kinetic_energy, sphere * sum.internal_energy};
 }
 
+void SphericalMpm::restore(const SphericalParticles& particles, double time) {
+  const std::size_t n = particles_.size();
+  const auto refuse = [&](const std::string& what) {
+    throw Error("spherical MPM: cannot restore " + what);
+  };
+  if (particles.size() != n)
+    refuse(std::to_string(particles.size()) + " particles; this run seeds " + std::to_string(n));
+  for (const auto& [name, field] : particles.scalar_fields())
+    if (field->size() != n)
+      refuse("'" + std::string(name) + "' of " + std::to_string(field->size()) +
+             " values; expected one per particle, " + std::to_string(n));
+  if (particles.history_stride != particles_.history_stride ||
+      particles.history.size() != n * particles_.history_stride ||
+      particles.deviatoric_stress.size() != n)
+    refuse("a history of stride " + std::to_string(particles.history_stride) + " (expected " +
+           std::to_string(particles_.history_stride) +
+           ") or a stress or history array of another length");
+  if (particles.material != particles_.material)
+    refuse("particles of other layers: their material order differs from this run's seeding");
+  if (!(time >= 0.0) || !std::isfinite(time))
+    refuse("at t = " + std::to_string(time) + " s; expected a finite time >= 0");
+  particles_ = particles;
+  time_ = time;
+}
+
 }  // namespace mpfd::mpm::spherical

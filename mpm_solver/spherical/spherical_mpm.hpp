@@ -59,6 +59,11 @@ class SphericalMpm {
   [[nodiscard]] double pressure_at(double radius) const;
   [[nodiscard]] SphericalTotals totals() const;
 
+  /// Continues from `particles` at `time` [s], a state this solver had (a checkpoint):
+  /// the same particles of the same layers. Throws mpfd::Error, the solver unchanged,
+  /// for another count, history stride or material order, or a time that is not >= 0.
+  void restore(const SphericalParticles& particles, double time);
+
  private:
   std::vector<RadialLayer> layers_;
   SphericalOptions options_;

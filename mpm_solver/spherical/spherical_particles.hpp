@@ -4,7 +4,9 @@
 // Stress is diag(sigma_rr, sigma_tt, sigma_tt) in the local (r, theta, phi) frame;
 // sigma = s - (p + q) I as in constitutive_model.hpp.
 
+#include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "mpm_solver/material/constitutive_model.hpp"
@@ -12,6 +14,10 @@
 namespace mpfd::mpm::spherical {
 
 struct SphericalParticles {
+  static constexpr std::size_t kScalarFields = 15;
+  template <class Field>
+  using NamedFields = std::array<std::pair<const char*, Field*>, kScalarFields>;
+
   std::vector<double> radius;                     ///< r_p [m]
   std::vector<double> velocity;                   ///< radial v_p [m/s]
   std::vector<double> mass;                       ///< m_p per unit solid angle [kg/sr], S eq. (1)
@@ -34,6 +40,9 @@ struct SphericalParticles {
 
   [[nodiscard]] std::size_t size() const noexcept { return radius.size(); }
   void resize(std::size_t n, std::size_t stride);
+  /// The arrays of one double per particle, by name (a checkpoint writes them so).
+  [[nodiscard]] NamedFields<std::vector<double>> scalar_fields();
+  [[nodiscard]] NamedFields<const std::vector<double>> scalar_fields() const;
   /// The constitutive state of particle p as a model sees it.
   [[nodiscard]] MaterialPoint point(std::size_t p);
   /// sigma_rr and sigma_tt including q [Pa].

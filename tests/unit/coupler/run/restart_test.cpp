@@ -306,51 +306,86 @@ TEST(CoupledRestart, A_zone_asleep_at_the_checkpoint_wakes_after_the_restart_as_
 }
 
 /// The AFDMP phase of each checkpoint of the run in <dir>/checkpointed (afdmp_phase.hpp:
-/// 2 fdm_blast, 3 mpm_fsi) and whether it names an MPM checkpoint.
-std::vector<std::pair<int, bool>> afdmp_checkpoints(const fs::path& scene) {
-  std::vector<std::pair<int, bool>> seen;
+/// 0 mpm_detonation, 1 spherical_detonation, 2 fdm_blast, 3 mpm_fsi) and which solvers'
+/// checkpoints it names.
+struct AfdmpCheckpoint {
+  int phase;
+  bool fdm, mpm;
+  bool operator==(const AfdmpCheckpoint&) const = default;
+};
+
+std::vector<AfdmpCheckpoint> afdmp_checkpoints(const fs::path& scene) {
+  std::vector<AfdmpCheckpoint> seen;
   for (const auto& file : checkpoints_of(scene.parent_path() / "checkpointed")) {
     const io::Hdf5File h5(file, io::Hdf5File::Mode::read);
-    seen.emplace_back(static_cast<int>(h5.read_attribute("/phases", "phase")),
-                      !h5.read_string_attribute("/", "mpm_path").empty());
+    seen.push_back({static_cast<int>(h5.read_attribute("/phases", "phase")),
+                    !h5.read_string_attribute("/", "fdm_path").empty(),
+                    !h5.read_string_attribute("/", "mpm_path").empty()});
   }
   return seen;
 }
 
-TEST(CoupledRestart, An_afdmp_run_restarts_in_its_fdm_and_fsi_phases_and_hands_over_as_before) {
-  // V5 coarse, as afdmp_run_test: MPM detonation, FDM blast, then the plate's FSI phase;
-  // outputs every 10 us, a checkpoint after each but the last.
+TEST(CoupledRestart, An_afdmp_run_restarts_in_each_of_its_phases_and_hands_over_as_before) {
+  // V5 coarse, as afdmp_run_test: MPM detonation (to 8.7 us), FDM blast, then the plate's
+  // FSI phase (from 61 us); outputs every 5 us, a checkpoint after each but the last.
   const auto scene = scene_file("afdmp_steel_plate_2d", "v5",
                                 {{"cells: [1000, 500, 1]", "cells: [100, 50, 1]"},
-                                 {"end: 3.0e-4", "end: 8.0e-5"},
-                                 {"interval: 2.0e-5", "interval: 1.0e-5"}});
+                                 {"end: 3.0e-4", "end: 7.0e-5"},
+                                 {"interval: 2.0e-5", "interval: 5.0e-6"}});
   const auto checkpointed =
       run(scene, scene.parent_path() / "checkpointed", {.checkpoint_every = 1});
   ASSERT_EQ(checkpointed["status"], "completed");
   ASSERT_EQ(checkpointed["details"]["afdmp"]["handoffs"].size(), 2u);
   const auto seen = afdmp_checkpoints(scene);
   restart_from_each(scene);
+  // The detonation: the MPM holds everything, the FDM only its Setup's state (no file).
+  EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{0, false, true}));
   // The FDM phase (the MPM holds the plate, idle) and the FSI phase (the FDM retired).
-  EXPECT_THAT(seen, ::testing::Contains(std::pair{2, true}));
-  EXPECT_THAT(seen, ::testing::Contains(std::pair{3, true}));
+  EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{2, true, true}));
+  EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{3, false, true}));
 }
 
-TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_fdm_phase_only) {
-  // V4 1D start, as afdmp_run_test, outputs every 5 us: the 1D stage (in the coupler) is
-  // not checkpointed, the FDM phase is, with the MPM retired (no FSI zone).
+TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_1d_stage_and_fdm_phase) {
+  // V4 1D start, as afdmp_run_test, outputs every 2 us: the 1D stage (in the coupler,
+  // handed over at 7.1 us) keeps its particles in the coupler's file and no solver has
+  // one (the MPM retired, no FSI zone; the FDM as Setup made it); then the FDM phase.
   const auto scene = scene_file("afdmp_free_air_3d_1d", "v4s",
                                 {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"},
-                                 {"end: 3.4e-4", "end: 2.0e-5"},
-                                 {"interval: 5.0e-5", "interval: 5.0e-6"}});
+                                 {"end: 3.4e-4", "end: 1.2e-5"},
+                                 {"interval: 5.0e-5", "interval: 2.0e-6"}});
   const auto checkpointed =
       run(scene, scene.parent_path() / "checkpointed", {.checkpoint_every = 1});
   ASSERT_EQ(checkpointed["status"], "completed");
   const auto seen = afdmp_checkpoints(scene);
   restart_from_each(scene);
-  ASSERT_FALSE(seen.empty());
-  for (const auto& [phase, mpm] : seen) {
-    EXPECT_EQ(phase, 2);
-    EXPECT_FALSE(mpm);
+  EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{1, false, false}));
+  EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{2, true, false}));
+  EXPECT_THAT(seen, ::testing::Each(::testing::Field(&AfdmpCheckpoint::mpm, false)));
+  // A 1D stage file whose particles were seeded otherwise is refused, naming the entry.
+  const auto files = checkpoints_of(scene.parent_path() / "checkpointed");
+  const auto stopped = stopped_after(scene.parent_path() / "checkpointed", files.front(),
+                                     scene.parent_path() / "tampered");
+  {
+    // Rewritten whole: HDF5 1.10 cannot modify this compact attribute in place.
+    const hid_t file = H5Fopen(checkpoints_of(stopped).back().c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    const hid_t stage = H5Gopen2(file, "/stage", H5P_DEFAULT);
+    EXPECT_GE(H5Adelete(stage, "particles"), 0);
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const hid_t count =
+        H5Acreate2(stage, "particles", H5T_NATIVE_DOUBLE, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    const double three = 3;
+    EXPECT_GE(H5Awrite(count, H5T_NATIVE_DOUBLE, &three), 0);
+    H5Aclose(count);
+    H5Sclose(scalar);
+    H5Gclose(stage);
+    H5Fclose(file);
+  }
+  try {
+    run(scene, stopped, {.restart = true, .overwrite = false});
+    ADD_FAILURE() << "a tampered 1D stage was restarted";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), HasSubstr("holds 3 1D particles (/stage, attribute particles)"));
   }
 }
 
@@ -415,19 +450,23 @@ TEST(CoupledRestart, A_restart_that_cannot_be_made_is_refused_and_the_folder_is_
     write_checkpoint_header(header_only, header, read_text(scene), 2);
   }
   refused_in_place(broken, "has no array '/loop/initial'");
-  // Its state whole, but no MPM file for the awake zone.
-  const auto unmatched = stopped_after(dir / "checkpointed", files.front(), dir / "unmatched");
-  auto without_mpm = newest_checkpoint(unmatched, read_text(scene), 2);
-  const fs::path original = without_mpm.file.string() + ".original";
-  fs::rename(without_mpm.file, original);
-  without_mpm.mpm.reset();
-  {
-    io::Hdf5File rewritten(without_mpm.file, io::Hdf5File::Mode::create);
-    write_checkpoint_header(rewritten, without_mpm, read_text(scene), 2);
-  }
-  copy_groups(original, without_mpm.file, {"/loop", "/step", "/gauges", "/activation"});
-  fs::remove(original);
-  refused_in_place(unmatched, "names no MPM checkpoint for an awake zone");
+  // Its state whole, but naming no file of one solver (`solver` in "fdm", "mpm").
+  const auto without = [&](const std::string& solver) {
+    const auto folder = stopped_after(dir / "checkpointed", files.front(), dir / ("no_" + solver));
+    auto named = newest_checkpoint(folder, read_text(scene), 2);
+    const fs::path original = named.file.string() + ".original";
+    fs::rename(named.file, original);
+    (solver == "fdm" ? named.fdm : named.mpm).reset();
+    {
+      io::Hdf5File rewritten(named.file, io::Hdf5File::Mode::create);
+      write_checkpoint_header(rewritten, named, read_text(scene), 2);
+    }
+    copy_groups(original, named.file, {"/loop", "/step", "/gauges", "/activation"});
+    fs::remove(original);
+    return folder;
+  };
+  refused_in_place(without("mpm"), "names no MPM checkpoint for an awake zone");
+  refused_in_place(without("fdm"), "names no FDM checkpoint (attribute fdm_path)");
 }
 
 }  // namespace
