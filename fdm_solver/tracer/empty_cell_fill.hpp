@@ -2,11 +2,17 @@
 // Cells that hold no tracer after a step. Tracers spread thin where a
 // material expands strongly (detonation products grow by orders of magnitude
 // in volume), leaving cells inside the expanded material without tracers. The
-// thesis leaves them unclassified; copying their previous material would label
-// cells that products have filled as air. Instead each empty cell takes the
-// material of the nearest cell that holds tracers (breadth-first over face
-// neighbours, in cell order, so the result is deterministic); a mixed source
-// gives its larger material. A grid with no tracer at all is left as it was.
+// thesis leaves them unclassified. We keep the material of an empty cell whose
+// whole 3 x 3 x 3 neighbourhood held that one material before the step: no
+// tracer moves a whole cell along an axis in one step (CFL < 1), so no other
+// material can have reached it. Every other empty cell, next to where the
+// materials met, takes the material of the nearest cell whose material is known
+// (breadth-first over face neighbours from the tracer cells and the kept cells,
+// in cell order, so the result is deterministic); a mixed source gives its
+// larger material. (Filling every empty cell from the nearest tracer cell, as
+// before 2026-12-07, labelled whole lines of far air as detonation products
+// where a products tracer cell stood out of the cloud's surface.) A grid with no
+// tracer at all is left as it was.
 
 #include <cstddef>
 #include <vector>
@@ -17,9 +23,11 @@
 
 namespace mpfd::fdm {
 
-/// Reclassifies the empty cells of `map` (bins.count(c) == 0). `queue` is
+/// Reclassifies the empty cells of `map` (bins.count(c) == 0), which hold the
+/// classification `previous` had before the step (classify_cells). `queue` is
 /// scratch; reserve it to the cell count to avoid allocation.
-void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins, MaterialMap& map,
+void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
+                      const MaterialMap& previous, MaterialMap& map,
                       std::vector<std::size_t>& queue);
 
 }  // namespace mpfd::fdm

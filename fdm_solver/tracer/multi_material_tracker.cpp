@@ -132,7 +132,7 @@ AdvectionReport MultiMaterialTracker::advect(const VelocityView& velocity, doubl
   const AdvectionReport report = advect_tracers(grid_, velocity, dt, faces, tracers_);
   bins_.rebuild(grid_, tracers_, static_cast<int>(eos_.size()));
   classify_cells(grid_, bins_, tracers_, current_, next_);  // T (3-23)
-  fill_empty_cells(grid_, bins_, next_, fill_queue_);
+  fill_empty_cells(grid_, bins_, current_, next_, fill_queue_);
   std::swap(current_, next_);
   assign_tracer_volumes(grid_, bins_, current_, tracers_);  // T (3-21), (3-22)
   return report;

@@ -13,7 +13,8 @@ struct Row {
   grid::UniformGrid grid{{0, 0, 0}, {1, 1, 1}, {6, 1, 1}};
   TracerSet tracers;
   TracerBins bins;
-  MaterialMap map{std::vector<int>{1, 1, 0, 0, 0, 0}, 2};
+  MaterialMap previous{std::vector<int>{1, 1, 0, 0, 0, 0}, 2};
+  MaterialMap map = previous;  // as classify_cells leaves it: the empty cells as before
   std::vector<std::size_t> queue;
 
   Row() {
@@ -24,21 +25,29 @@ struct Row {
   }
 };
 
-TEST(EmptyCellFill, EmptyCellsTakeTheMaterialOfTheNearestTracers) {
+TEST(EmptyCellFill, AnEmptyCellWhereMaterialsMetTakesTheNearestKnownMaterial) {
   Row row;
-  fill_empty_cells(row.grid, row.bins, row.map, row.queue);
-  EXPECT_EQ(row.map.material[2], 1);  // next to the expanded material 1
-  EXPECT_EQ(row.map.material[4], 0);  // next to material 0's tracers
-  EXPECT_EQ(row.map.material[3], 1);  // equidistant: the lower source cell wins, every time
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
+  EXPECT_EQ(row.map.material[2], 1);  // next to the expanding material 1's tracers
   for (std::size_t c = 0; c < 6; ++c)
     EXPECT_DOUBLE_EQ(row.map.theta[c] + row.map.theta[6 + c], 1.0) << c;
   EXPECT_DOUBLE_EQ(row.map.theta[6 + 2], 1.0);  // theta of material 1 in cell 2
 }
 
+TEST(EmptyCellFill, AnEmptyCellInsideOneMaterialKeepsIt) {
+  Row row;
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
+  // Cells 3 and 4 and both their neighbours were material 0: material 1, two cells
+  // away, cannot reach them in one step (the nearest-tracer fill gave cell 3 material 1).
+  EXPECT_EQ(row.map.material[3], 0);
+  EXPECT_EQ(row.map.material[4], 0);
+  EXPECT_DOUBLE_EQ(row.map.theta[3], 1.0);
+}
+
 TEST(EmptyCellFill, CellsHoldingTracersAreUntouched) {
   Row row;
   const MaterialMap before = row.map;
-  fill_empty_cells(row.grid, row.bins, row.map, row.queue);
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
   for (const std::size_t c : {0u, 1u, 5u}) EXPECT_EQ(row.map.material[c], before.material[c]);
 }
 
@@ -47,35 +56,87 @@ TEST(EmptyCellFill, AGridWithoutTracersKeepsItsPreviousMaterials) {
   row.tracers = TracerSet{};
   row.bins.rebuild(row.grid, row.tracers, 2);
   const MaterialMap before = row.map;
-  fill_empty_cells(row.grid, row.bins, row.map, row.queue);
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
   EXPECT_EQ(row.map.material, before.material);
 }
 
-/// The fill as first written: breadth-first over Index3 neighbours. The
-/// solver's must label every cell the same (ties included).
-void reference_fill(const grid::UniformGrid& grid, const TracerBins& bins, MaterialMap& map) {
+// The V4 1D start at 100^3 (2026-12-07): a products tracer cell standing out of the
+// cloud's surface labelled the whole line of far air beyond it as products, whose
+// equation of state then gave that air 76 kPa. A 20 x 5 x 5 grid: products (1) filled
+// x < 5 before the step, air (0) the rest; after it, products tracers in x < 5 and in
+// cell (5, 2, 2), air tracers in the other cells of x = 5.
+TEST(EmptyCellFill, FarAirBeyondAProtrudingProductsCellStaysAir) {
+  const grid::UniformGrid grid{{0, 0, 0}, {20, 5, 5}, {20, 5, 5}};
   const std::size_t cells = grid.cell_count();
+  std::vector<int> before(cells, 0);
+  TracerSet tracers;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const grid::Index3 at = grid.cell_of_index(c);
+    if (at[0] < 5) before[c] = 1;
+    const grid::Vec3 centre{at[0] + 0.5, at[1] + 0.5, at[2] + 0.5};
+    if (at[0] < 5) tracers.add(centre, 1, 1.0);
+    if (at[0] == 5) tracers.add(centre, at[1] == 2 && at[2] == 2 ? 1 : 0, 1.0);
+  }
+  TracerBins bins;
+  bins.rebuild(grid, tracers, 2);
+  const MaterialMap previous{before, 2};
+  MaterialMap map;
+  classify_cells(grid, bins, tracers, previous, map);
   std::vector<std::size_t> queue;
+  fill_empty_cells(grid, bins, previous, map, queue);
+  for (int i = 6; i < 20; ++i)
+    EXPECT_EQ(map.material[grid.cell_index({i, 2, 2})], 0) << "cell (" << i << ", 2, 2)";
+}
+
+/// The fill written plainly: Index3 neighbourhoods, the same rule and visiting order.
+/// The solver's must label every cell the same (ties included).
+void reference_fill(const grid::UniformGrid& grid, const TracerBins& bins,
+                    const MaterialMap& previous, MaterialMap& map) {
+  const std::size_t cells = grid.cell_count();
+  const auto inside = [&](std::size_t c) {
+    if (previous.is_mixed(c)) return false;
+    const grid::Index3 cell = grid.cell_of_index(c);
+    for (int dk = -1; dk <= 1; ++dk)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const grid::Index3 n{cell[0] + di, cell[1] + dj, cell[2] + dk};
+          bool in_grid = true;
+          for (int a = 0; a < 3; ++a) in_grid = in_grid && n[a] >= 0 && n[a] < grid.cells()[a];
+          if (in_grid && previous.material[grid.cell_index(n)] != previous.material[c])
+            return false;
+        }
+    return true;
+  };
+  const auto neighbours = [&](std::size_t c) {
+    std::vector<std::size_t> out;
+    const grid::Index3 cell = grid.cell_of_index(c);
+    for (int a = 0; a < 3; ++a)
+      for (const int step : {-1, 1}) {
+        grid::Index3 next = cell;
+        next[a] += step;
+        if (next[a] >= 0 && next[a] < grid.cells()[a]) out.push_back(grid.cell_index(next));
+      }
+    return out;
+  };
   for (std::size_t c = 0; c < cells; ++c)
-    if (bins.count(c) == 0) map.material[c] = -2;
-  for (std::size_t c = 0; c < cells; ++c)
-    if (bins.count(c) > 0) queue.push_back(c);
+    if (bins.count(c) == 0 && !inside(c)) map.material[c] = -2;
+  std::vector<std::size_t> queue;
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (map.material[c] == -2) continue;
+    for (const std::size_t n : neighbours(c))
+      if (map.material[n] == -2) {
+        queue.push_back(c);
+        break;
+      }
+  }
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t c = queue[head];
     int material = map.material[c];
     if (map.is_mixed(c)) material = map.volume_fraction(c, 1) > map.volume_fraction(c, 0) ? 1 : 0;
-    const grid::Index3 cell = grid.cell_of_index(c);
-    for (int a = 0; a < 3; ++a) {
-      if (!grid.is_active(a)) continue;
-      for (const int step : {-1, 1}) {
-        grid::Index3 next = cell;
-        next[a] += step;
-        if (next[a] < 0 || next[a] >= grid.cells()[a]) continue;
-        const std::size_t n = grid.cell_index(next);
-        if (map.material[n] != -2) continue;
-        map.material[n] = material;
-        queue.push_back(n);
-      }
+    for (const std::size_t n : neighbours(c)) {
+      if (map.material[n] != -2) continue;
+      map.material[n] = material;
+      queue.push_back(n);
     }
   }
   for (std::size_t c = 0; c < cells; ++c)
@@ -84,38 +145,43 @@ void reference_fill(const grid::UniformGrid& grid, const TracerBins& bins, Mater
         map.theta[static_cast<std::size_t>(r) * cells + c] = r == map.material[c] ? 1.0 : 0.0;
 }
 
-// Random sparse tracers of two materials on 3D grids and 2D ones in each plane,
-// with mixed cells among the sources: every empty cell gets the reference's
-// material and volume fractions.
-TEST(EmptyCellFill, LabelsEveryCellAsTheFirstWrittenBreadthFirstFill) {
+// Random sparse tracers of two materials on 3D grids and 2D ones in each plane, over
+// a random earlier classification with mixed cells: every empty cell gets the
+// reference's material and volume fractions.
+TEST(EmptyCellFill, LabelsEveryCellAsThePlainlyWrittenFill) {
   std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const grid::Index3 shape : {grid::Index3{9, 7, 5}, grid::Index3{12, 8, 1},
                                    grid::Index3{1, 9, 7}, grid::Index3{7, 1, 5}}) {
     const grid::UniformGrid grid{{0, 0, 0}, {1, 1, 1}, shape};  // cells of 1 m
     const std::size_t cells = grid.cell_count();
     for (int trial = 0; trial < 20; ++trial) {
+      // Before the step: material 1 below a random plane x + y + z < cut, a few mixed cells.
+      const double cut = (shape[0] + shape[1] + shape[2]) * unit(random);
+      std::vector<int> before(cells);
+      for (std::size_t c = 0; c < cells; ++c) {
+        const grid::Index3 at = grid.cell_of_index(c);
+        before[c] = at[0] + at[1] + at[2] < cut ? 1 : 0;
+      }
+      MaterialMap previous{before, 2};
+      for (std::size_t c = 0; c < cells; ++c)
+        if (unit(random) < 0.05) {
+          previous.material[c] = kMixedCell;
+          previous.theta[c] = previous.theta[cells + c] = 0.5;
+        }
       TracerSet tracers;
-      std::uniform_real_distribution<double> unit(0.0, 1.0);
       const int count = 1 + trial * 3;
       for (int t = 0; t < count; ++t)
         tracers.add({shape[0] * unit(random), shape[1] * unit(random), shape[2] * unit(random)},
                     unit(random) < 0.5 ? 0 : 1, 1.0);
       TracerBins bins;
       bins.rebuild(grid, tracers, 2);
-      std::vector<int> start(cells, 0);
-      MaterialMap map{start, 2};
-      for (std::size_t c = 0; c < cells; ++c) {
-        if (bins.count(c) == 0) continue;
-        const double theta1 =
-            static_cast<double>(bins.count(c, 1)) / static_cast<double>(bins.count(c));
-        map.material[c] = theta1 == 0.0 ? 0 : theta1 == 1.0 ? 1 : kMixedCell;
-        map.theta[c] = 1.0 - theta1;
-        map.theta[cells + c] = theta1;
-      }
+      MaterialMap map;
+      classify_cells(grid, bins, tracers, previous, map);
       MaterialMap expected = map;
-      reference_fill(grid, bins, expected);
+      reference_fill(grid, bins, previous, expected);
       std::vector<std::size_t> queue;
-      fill_empty_cells(grid, bins, map, queue);
+      fill_empty_cells(grid, bins, previous, map, queue);
       EXPECT_EQ(map.material, expected.material) << "trial " << trial;
       EXPECT_EQ(map.theta, expected.theta) << "trial " << trial;
     }
