@@ -38,43 +38,49 @@ struct CellOrder {
   std::array<std::size_t, 3> stride;
 };
 
-/// Whether cell c and every cell of its 3 x 3 x 3 neighbourhood held the one
-/// material `previous.material[c]` (an inactive axis has no neighbour either way).
-bool inside_one_material(const CellOrder& order, const MaterialMap& previous, std::size_t c) {
-  const int material = previous.material[c];
-  if (material == kMixedCell) return false;
-  const auto at = order.at(c);
-  std::array<std::size_t, 3> lo{}, hi{};
-  for (int a = 0; a < 3; ++a) {
-    lo[a] = at[a] > 0 ? at[a] - 1 : 0;
-    hi[a] = at[a] + 1 < order.n[a] ? at[a] + 1 : at[a];
+constexpr int kNotOne = -3;  ///< a neighbourhood column holding more than one class
+
+/// Marks kUnassigned in `map` every empty cell of row (j, k) whose 3 x 3 x 3
+/// neighbourhood (within the grid) did not hold one material in `previous`. The
+/// neighbourhood's columns along x (3 x 3 cells each) are read once per row.
+void mark_row(const CellOrder& order, std::size_t j, std::size_t k, const TracerBins& bins,
+              const MaterialMap& previous, MaterialMap& map) {
+  const std::size_t j0 = j > 0 ? j - 1 : j, j1 = j + 1 < order.n[1] ? j + 1 : j;
+  const std::size_t k0 = k > 0 ? k - 1 : k, k1 = k + 1 < order.n[2] ? k + 1 : k;
+  const auto column = [&](std::size_t i) {  // its one class, or kNotOne
+    const int first = previous.material[i + j0 * order.stride[1] + k0 * order.stride[2]];
+    for (std::size_t kk = k0; kk <= k1; ++kk)
+      for (std::size_t jj = j0; jj <= j1; ++jj)
+        if (previous.material[i + jj * order.stride[1] + kk * order.stride[2]] != first)
+          return kNotOne;
+    return first;
+  };
+  const std::size_t row = j * order.stride[1] + k * order.stride[2];
+  int here = column(0);
+  int left = here;  // no neighbour: nothing else can come from there
+  for (std::size_t i = 0; i < order.n[0]; ++i) {
+    const int right = i + 1 < order.n[0] ? column(i + 1) : here;
+    const bool one_material = here >= 0 && left == here && right == here;
+    if (!one_material && bins.count(row + i) == 0) map.material[row + i] = kUnassigned;
+    left = here;
+    here = right;
   }
-  for (std::size_t k = lo[2]; k <= hi[2]; ++k)
-    for (std::size_t j = lo[1]; j <= hi[1]; ++j)
-      for (std::size_t i = lo[0]; i <= hi[0]; ++i)
-        if (previous.material[i + j * order.stride[1] + k * order.stride[2]] != material)
-          return false;
-  return true;
 }
 
 }  // namespace
 
 void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
-                      const MaterialMap& previous, MaterialMap& map,
-                      std::vector<std::size_t>& queue) {
+                      const MaterialMap& previous, MaterialMap& map, FillScratch& scratch) {
   const std::size_t cells = grid.cell_count();
-  queue.clear();
   bool any_tracer = false;
   for (std::size_t c = 0; c < cells && !any_tracer; ++c) any_tracer = bins.count(c) > 0;
   if (!any_tracer) return;
 
   const CellOrder order(grid);
-  parallel_for(cells, [&](std::size_t c) {
-    if (bins.count(c) == 0 && !inside_one_material(order, previous, c))
-      map.material[c] = kUnassigned;  // classify_cells left previous's there
+  // An empty cell holds previous's class (classify_cells); kept where one material was all round.
+  parallel_for(order.n[1] * order.n[2], [&](std::size_t row) {
+    mark_row(order, row % order.n[1], row / order.n[1], bins, previous, map);
   });
-  // Breadth-first from every known cell next to an unassigned one, in cell order.
-  // This part runs serially; it visits only the cells near where materials met.
   const auto for_each_neighbour = [&](std::size_t c, const auto& visit) {
     const auto at = order.at(c);
     for (int a = 0; a < 3; ++a) {
@@ -82,13 +88,19 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
       if (at[a] + 1 < order.n[a]) visit(c + order.stride[a]);
     }
   };
-  for (std::size_t c = 0; c < cells; ++c) {
-    if (map.material[c] == kUnassigned) continue;
-    bool borders = false;
-    for_each_neighbour(c,
-                       [&](std::size_t n) { borders = borders || map.material[n] == kUnassigned; });
-    if (borders) queue.push_back(c);
-  }
+  scratch.reserve(cells);
+  parallel_for(cells, [&](std::size_t c) {
+    bool seed = false;
+    if (map.material[c] != kUnassigned)
+      for_each_neighbour(c, [&](std::size_t n) { seed = seed || map.material[n] == kUnassigned; });
+    scratch.seeds[c] = seed ? 1 : 0;
+  });
+  // Breadth-first from the seeds in cell order, serially: it visits only the cells
+  // near where materials met.
+  std::vector<std::size_t>& queue = scratch.queue;
+  queue.clear();
+  for (std::size_t c = 0; c < cells; ++c)
+    if (scratch.seeds[c] != 0) queue.push_back(c);
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t c = queue[head];
     const int material = dominant_material(map, c);

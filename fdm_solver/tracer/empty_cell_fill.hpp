@@ -15,6 +15,7 @@
 // tracer at all is left as it was.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "common/grid/uniform_grid.hpp"
@@ -23,11 +24,20 @@
 
 namespace mpfd::fdm {
 
+/// Scratch of fill_empty_cells, kept between steps: no allocation once warm.
+struct FillScratch {
+  std::vector<std::size_t> queue;   ///< breadth-first queue
+  std::vector<std::uint8_t> seeds;  ///< per cell: a known cell next to an unassigned one
+  /// Sized for `cells` (once).
+  void reserve(std::size_t cells) {
+    queue.reserve(cells);
+    seeds.resize(cells);
+  }
+};
+
 /// Reclassifies the empty cells of `map` (bins.count(c) == 0), which hold the
-/// classification `previous` had before the step (classify_cells). `queue` is
-/// scratch; reserve it to the cell count to avoid allocation.
+/// classification `previous` had before the step (classify_cells).
 void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
-                      const MaterialMap& previous, MaterialMap& map,
-                      std::vector<std::size_t>& queue);
+                      const MaterialMap& previous, MaterialMap& map, FillScratch& scratch);
 
 }  // namespace mpfd::fdm

@@ -21,6 +21,7 @@
 
 #include "common/eos/any_eos.hpp"
 #include "common/grid/uniform_grid.hpp"
+#include "fdm_solver/tracer/empty_cell_fill.hpp"
 #include "fdm_solver/tracer/material_map.hpp"
 #include "fdm_solver/tracer/material_states.hpp"
 #include "fdm_solver/tracer/tracer_advection.hpp"
@@ -94,7 +95,7 @@ class MultiMaterialTracker {
   MaterialMap current_;
   MaterialMap next_;  // classify_cells output, swapped with current_
   MaterialStates states_;
-  std::vector<std::size_t> fill_queue_;  // scratch of fill_empty_cells
+  FillScratch fill_scratch_;  // of fill_empty_cells
 };
 
 }  // namespace mpfd::fdm

@@ -15,7 +15,7 @@ struct Row {
   TracerBins bins;
   MaterialMap previous{std::vector<int>{1, 1, 0, 0, 0, 0}, 2};
   MaterialMap map = previous;  // as classify_cells leaves it: the empty cells as before
-  std::vector<std::size_t> queue;
+  FillScratch scratch;
 
   Row() {
     tracers.add({0.5, 0.5, 0.5}, 1, 1.0);
@@ -27,7 +27,7 @@ struct Row {
 
 TEST(EmptyCellFill, AnEmptyCellWhereMaterialsMetTakesTheNearestKnownMaterial) {
   Row row;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
   EXPECT_EQ(row.map.material[2], 1);  // next to the expanding material 1's tracers
   for (std::size_t c = 0; c < 6; ++c)
     EXPECT_DOUBLE_EQ(row.map.theta[c] + row.map.theta[6 + c], 1.0) << c;
@@ -36,7 +36,7 @@ TEST(EmptyCellFill, AnEmptyCellWhereMaterialsMetTakesTheNearestKnownMaterial) {
 
 TEST(EmptyCellFill, AnEmptyCellInsideOneMaterialKeepsIt) {
   Row row;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
   // Cells 3 and 4 and both their neighbours were material 0: material 1, two cells
   // away, cannot reach them in one step (the nearest-tracer fill gave cell 3 material 1).
   EXPECT_EQ(row.map.material[3], 0);
@@ -47,7 +47,7 @@ TEST(EmptyCellFill, AnEmptyCellInsideOneMaterialKeepsIt) {
 TEST(EmptyCellFill, CellsHoldingTracersAreUntouched) {
   Row row;
   const MaterialMap before = row.map;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
   for (const std::size_t c : {0u, 1u, 5u}) EXPECT_EQ(row.map.material[c], before.material[c]);
 }
 
@@ -56,7 +56,7 @@ TEST(EmptyCellFill, AGridWithoutTracersKeepsItsPreviousMaterials) {
   row.tracers = TracerSet{};
   row.bins.rebuild(row.grid, row.tracers, 2);
   const MaterialMap before = row.map;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.queue);
+  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
   EXPECT_EQ(row.map.material, before.material);
 }
 
@@ -82,8 +82,8 @@ TEST(EmptyCellFill, FarAirBeyondAProtrudingProductsCellStaysAir) {
   const MaterialMap previous{before, 2};
   MaterialMap map;
   classify_cells(grid, bins, tracers, previous, map);
-  std::vector<std::size_t> queue;
-  fill_empty_cells(grid, bins, previous, map, queue);
+  FillScratch scratch;
+  fill_empty_cells(grid, bins, previous, map, scratch);
   for (int i = 6; i < 20; ++i)
     EXPECT_EQ(map.material[grid.cell_index({i, 2, 2})], 0) << "cell (" << i << ", 2, 2)";
 }
@@ -180,8 +180,8 @@ TEST(EmptyCellFill, LabelsEveryCellAsThePlainlyWrittenFill) {
       classify_cells(grid, bins, tracers, previous, map);
       MaterialMap expected = map;
       reference_fill(grid, bins, previous, expected);
-      std::vector<std::size_t> queue;
-      fill_empty_cells(grid, bins, previous, map, queue);
+      FillScratch scratch;
+      fill_empty_cells(grid, bins, previous, map, scratch);
       EXPECT_EQ(map.material, expected.material) << "trial " << trial;
       EXPECT_EQ(map.theta, expected.theta) << "trial " << trial;
     }
