@@ -32,6 +32,12 @@ int main(int argc, char** argv) {
                   "(<out>/checkpoints, fdm/checkpoints, mpm/checkpoints); 0: none")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  int checkpoint_keep = 2;
+  run->add_option("--checkpoint-keep", checkpoint_keep,
+                  "keep the newest N checkpoints; each older one goes with the solver files "
+                  "only it names (those in --out); 0: keep all")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   run->add_flag("--restart", launch.restart,
                 "go on with the run in --out from its newest checkpoint (same scene file)");
   run->add_flag("--processes", processes, "start the solvers as child processes (over ipc)");
@@ -101,6 +107,7 @@ int main(int argc, char** argv) {
     mpfd::coupler::CoupledRunOptions options;
     options.out_dir = out_dir;
     options.checkpoint_every = checkpoint_every;
+    options.checkpoint_keep = checkpoint_keep;
     if (!record.empty()) options.record = record;
     options.max_chunk_bytes = static_cast<std::uint64_t>(chunk_mib * 1024 * 1024);
     options.handoff_timeout = std::chrono::milliseconds(std::llround(handoff_timeout * 1e3));

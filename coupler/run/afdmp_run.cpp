@@ -685,7 +685,8 @@ class AfdmpLoop {
   std::int64_t phase_steps_ = 0;
   Clock::time_point phase_start_;
   CoupledRunReport report_;
-  CheckpointLog checkpoints_{options_.checkpoint_every, options_.restart.has_value()};
+  CheckpointLog checkpoints_{options_.checkpoint_every, options_.checkpoint_keep,
+                             options_.restart.has_value()};
 };
 
 }  // namespace

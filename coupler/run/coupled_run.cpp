@@ -465,7 +465,8 @@ class Loop {
   Totals initial_;
   CoupledRunReport report_;
   double step_seconds_ = 0;
-  CheckpointLog checkpoints_{options_.checkpoint_every, options_.restart.has_value()};
+  CheckpointLog checkpoints_{options_.checkpoint_every, options_.checkpoint_keep,
+                             options_.restart.has_value()};
   bool mpm_slower_ = false;  ///< the MPM's last Advance took longer than the FDM's
   std::uint64_t injected_ = 0, removed_ = 0, discarded_ = 0;
   double injected_mass_ = 0, deposited_mass_ = 0;

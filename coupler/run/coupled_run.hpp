@@ -38,6 +38,8 @@ struct CoupledRunOptions {
   std::chrono::milliseconds handoff_timeout{300000};
   /// A checkpoint after every this many outputs (coupler_checkpoint.hpp); 0: none.
   int checkpoint_every = 0;
+  /// Keep the newest this many checkpoints, removing older ones (prune_checkpoints); 0: all.
+  int checkpoint_keep = 2;
   /// Go on from this checkpoint of the run in out_dir (newest_checkpoint).
   std::optional<CouplerCheckpoint> restart;
 };

@@ -1,9 +1,12 @@
 #include "coupler/run/coupler_checkpoint.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
+#include <utility>
 
 #include "common/core/error.hpp"
 #include "common/core/log.hpp"
@@ -42,22 +45,59 @@ std::optional<SolverCheckpoint> read_solver(const io::Hdf5File& file, const std:
                           static_cast<std::uint64_t>(file.read_attribute("/", name + "_step"))};
 }
 
+/// <out_dir>/checkpoints/coupler_NNNNNN.h5, by step, oldest first.
+std::vector<fs::path> coupler_checkpoint_files(const fs::path& out_dir) {
+  const fs::path folder = out_dir / "checkpoints";
+  const std::regex pattern(R"(coupler_(\d+)\.h5)");
+  std::vector<std::pair<long long, fs::path>> found;
+  if (fs::is_directory(folder))
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      std::smatch match;
+      const std::string name = entry.path().filename().string();
+      if (std::regex_match(name, match, pattern))
+        found.emplace_back(std::stoll(match[1].str()), entry.path());
+    }
+  std::sort(found.begin(), found.end());
+  std::vector<fs::path> files;
+  for (auto& [step, path] : found) files.push_back(std::move(path));
+  return files;
+}
+
+/// The solver checkpoints a coupler file names, as absolute paths.
+std::vector<fs::path> solver_files_of(const fs::path& coupler_file, const fs::path& out_dir) {
+  const io::Hdf5File file(coupler_file, io::Hdf5File::Mode::read);
+  std::vector<fs::path> named;
+  for (const char* solver : {"fdm", "mpm"})
+    if (const auto checkpoint = read_solver(file, solver, out_dir))
+      named.push_back(fs::absolute(checkpoint->path).lexically_normal());
+  return named;
+}
+
 }  // namespace
 
-CheckpointLog::CheckpointLog(int every, bool restarting)
-    : every_(every), summary_ready_(!restarting), summary_{{"every_outputs", every}} {}
+CheckpointLog::CheckpointLog(int every, int keep, bool restarting)
+    : every_(every),
+      keep_(keep),
+      summary_ready_(!restarting),
+      summary_{{"every_outputs", every}, {"keep", keep}, {"removed", 0}} {}
 
 bool CheckpointLog::due(int outputs, bool run_goes_on) const {
   return every_ > 0 && (outputs - 1) % every_ == 0 && run_goes_on;
 }
 
 void CheckpointLog::taken(const CouplerCheckpoint& checkpoint) {
+  remember(checkpoint);
+  removed_ += prune_checkpoints(checkpoint.file.parent_path().parent_path(), keep_);
+  summary_["removed"] = removed_;
+}
+
+void CheckpointLog::remember(const CouplerCheckpoint& checkpoint) {
   summary_["last"] = {
       {"file", checkpoint.file.string()}, {"step", checkpoint.step}, {"time_s", checkpoint.time}};
 }
 
 void CheckpointLog::restarted(const CouplerCheckpoint& from) {
-  taken(from);
+  remember(from);
   summary_["restarted_from"] = summary_["last"];
   earlier_wall_seconds_ = from.wall_seconds;
   summary_ready_ = true;
@@ -101,27 +141,14 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
                   "' has completed (summary.json: status completed); there is nothing to go on "
                   "with. To run it again, run without --restart, with --overwrite");
   }
-  const fs::path folder = out_dir / "checkpoints";
-  const std::regex pattern(R"(coupler_(\d+)\.h5)");
-  std::optional<fs::path> newest;
-  long long newest_step = -1;
-  if (fs::is_directory(folder))
-    for (const auto& entry : fs::directory_iterator(folder)) {
-      std::smatch match;
-      const std::string name = entry.path().filename().string();
-      if (!std::regex_match(name, match, pattern)) continue;
-      const long long step = std::stoll(match[1].str());
-      if (step > newest_step) {
-        newest_step = step;
-        newest = entry.path();
-      }
-    }
-  if (!newest)
-    throw Error("--restart: '" + folder.string() +
+  const auto files = coupler_checkpoint_files(out_dir);
+  if (files.empty())
+    throw Error("--restart: '" + (out_dir / "checkpoints").string() +
                 "' holds no coupler_NNNNNN.h5; run with --checkpoint-every K to write them");
-  const io::Hdf5File file(*newest, io::Hdf5File::Mode::read);
+  const fs::path& newest = files.back();
+  const io::Hdf5File file(newest, io::Hdf5File::Mode::read);
   const auto refuse = [&](const std::string& what) {
-    throw Error("--restart: '" + newest->string() + "' " + what);
+    throw Error("--restart: '" + newest.string() + "' " + what);
   };
   std::string format;
   try {
@@ -143,7 +170,7 @@ CouplerCheckpoint newest_checkpoint(const fs::path& out_dir, const std::string& 
   if (file_dimension != dimension)
     refuse("holds a " + std::to_string(file_dimension) + "D run; this scene is " +
            std::to_string(dimension) + "D");
-  CouplerCheckpoint checkpoint{.file = *newest,
+  CouplerCheckpoint checkpoint{.file = newest,
                                .step = static_cast<std::int64_t>(file.read_attribute("/", "step")),
                                .time = file.read_attribute("/", "time"),
                                .outputs = static_cast<int>(file.read_attribute("/", "outputs")),
@@ -189,6 +216,27 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
     save(out);
   });
   return taken;
+}
+
+int prune_checkpoints(const fs::path& out_dir, int keep) {
+  const auto files = coupler_checkpoint_files(out_dir);
+  if (keep <= 0 || files.size() <= static_cast<std::size_t>(keep)) return 0;
+  const auto oldest_kept = files.end() - keep;
+  std::set<fs::path> kept;
+  for (auto file = oldest_kept; file != files.end(); ++file)
+    for (const auto& named : solver_files_of(*file, out_dir)) kept.insert(named);
+  const fs::path run = fs::absolute(out_dir).lexically_normal();
+  for (auto file = files.begin(); file != oldest_kept; ++file) {
+    const auto named = solver_files_of(*file, out_dir);
+    fs::remove(*file);  // first: a coupler file never names a removed solver file
+    for (const auto& solver_file : named) {
+      const fs::path inside = solver_file.lexically_relative(run);
+      if (kept.contains(solver_file) || inside.empty() || *inside.begin() == "..") continue;
+      fs::remove(solver_file);
+      fs::remove(solver_file.string() + ".sha256");
+    }
+  }
+  return static_cast<int>(oldest_kept - files.begin());
 }
 
 void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,

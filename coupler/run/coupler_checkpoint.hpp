@@ -65,16 +65,18 @@ struct CouplerCheckpoint {
   void read_state(const std::function<void(const RestartReader&)>& restore) const;
 };
 
-/// What a run loop keeps of its checkpoints: when one is due, summary.json's
-/// details.checkpoints, and, in a restarted run, the wall time before it and whether
-/// the run is restored far enough for its summary to replace the stopped run's.
+/// What a run loop keeps of its checkpoints: when one is due, which older ones go,
+/// summary.json's details.checkpoints, and, in a restarted run, the wall time before it
+/// and whether the run is restored far enough for its summary to replace the stopped run's.
 class CheckpointLog {
  public:
-  /// `every`: --checkpoint-every (0: none); `restarting`: --restart.
-  CheckpointLog(int every, bool restarting);
+  /// `every`: --checkpoint-every (0: none); `keep`: --checkpoint-keep (0: all);
+  /// `restarting`: --restart.
+  CheckpointLog(int every, int keep, bool restarting);
 
   /// After `outputs` outputs (output 0 included), when the run goes on: one is due.
   [[nodiscard]] bool due(int outputs, bool run_goes_on) const;
+  /// `checkpoint` is in place: the older ones beyond `keep` go (prune_checkpoints).
   void taken(const CouplerCheckpoint& checkpoint);
   /// The run is restored from `from`.
   void restarted(const CouplerCheckpoint& from);
@@ -84,7 +86,11 @@ class CheckpointLog {
   [[nodiscard]] const nlohmann::json& summary() const { return summary_; }
 
  private:
+  void remember(const CouplerCheckpoint& checkpoint);
+
   int every_;
+  int keep_;
+  int removed_ = 0;
   bool summary_ready_;
   double earlier_wall_seconds_ = 0;
   nlohmann::json summary_;
@@ -120,6 +126,12 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
                                   const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,
                                   int dimension, const std::function<void(RestartWriter&)>& save);
+
+/// Keeps the newest `keep` coupler checkpoints of <out_dir>/checkpoints (0: all). Each older
+/// one is removed first, then the solver checkpoints (and their .sha256) that it names and no
+/// kept one does, where they lie in `out_dir` (a solver on another host keeps its own).
+/// Returns how many coupler checkpoints were removed.
+int prune_checkpoints(const std::filesystem::path& out_dir, int keep);
 
 /// Sends each solver that has a file in `from` its Restore, all at once, and checks the
 /// Restored step (a zone that slept, or had been retired, has none: it stays as Setup

@@ -92,6 +92,9 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
     fdm_program = program(launch.fdm_program, self, "fdm_solver");
     mpm_program = program(launch.mpm_program, self, "mpm_solver");
   }
+  if (options.checkpoint_keep < 0)
+    throw Error("--checkpoint-keep " + std::to_string(options.checkpoint_keep) +
+                ": expected a whole number >= 0 (0: keep every checkpoint)");
   if (options.checkpoint_every < 0)
     throw Error("--checkpoint-every " + std::to_string(options.checkpoint_every) +
                 ": expected a count of outputs >= 0 (0: none)");

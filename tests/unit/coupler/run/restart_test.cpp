@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "common/core/error.hpp"
@@ -57,6 +58,7 @@ fs::path blast_scene(const std::string& tag,
 
 struct RunArgs {
   int checkpoint_every = 0;
+  int checkpoint_keep = 0;  // all: restart_from_each restarts from every one
   bool restart = false;
   bool overwrite = true;
 };
@@ -70,6 +72,7 @@ nlohmann::json run(const fs::path& scene, const fs::path& out, const RunArgs& ar
   options.out_dir = out;
   options.progress = false;
   options.checkpoint_every = args.checkpoint_every;
+  options.checkpoint_keep = args.checkpoint_keep;
   (void)launch_run(scene, launch, options, "coupler");
   std::ifstream in(out / "summary.json");
   return nlohmann::json::parse(in);
@@ -343,6 +346,49 @@ TEST(CoupledRestart, An_afdmp_run_restarts_in_each_of_its_phases_and_hands_over_
   // The FDM phase (the MPM holds the plate, idle) and the FSI phase (the FDM retired).
   EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{2, true, true}));
   EXPECT_THAT(seen, ::testing::Contains(AfdmpCheckpoint{3, false, true}));
+}
+
+/// The solver checkpoint files in <out>/<solver>/checkpoints (no .sha256), as absolute paths.
+std::set<fs::path> solver_checkpoint_files(const fs::path& out) {
+  std::set<fs::path> files;
+  for (const char* solver : {"fdm", "mpm"})
+    if (fs::is_directory(out / solver / "checkpoints"))
+      for (const auto& entry : fs::directory_iterator(out / solver / "checkpoints"))
+        if (entry.path().extension() == ".h5")
+          files.insert(fs::absolute(entry.path()).lexically_normal());
+  return files;
+}
+
+TEST(CoupledRestart, Only_the_newest_checkpoints_are_kept_with_the_solver_files_they_name) {
+  // V5 coarse: through the FDM phase every coupler file names the idle MPM's one file,
+  // which must outlive the coupler files that go.
+  const auto scene = scene_file("afdmp_steel_plate_2d", "v5keep",
+                                {{"cells: [1000, 500, 1]", "cells: [100, 50, 1]"},
+                                 {"end: 3.0e-4", "end: 7.0e-5"},
+                                 {"interval: 2.0e-5", "interval: 5.0e-6"}});
+  const auto dir = scene.parent_path();
+  run(scene, dir / "checkpointed", {.checkpoint_every = 1});
+  const std::size_t all = checkpoints_of(dir / "checkpointed").size();
+  const auto kept = run(scene, dir / "kept", {.checkpoint_every = 1, .checkpoint_keep = 2});
+  const auto files = checkpoints_of(dir / "kept");
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(kept["details"]["checkpoints"]["removed"], all - 2);
+  std::set<fs::path> named;
+  for (const auto& file : files) {
+    const io::Hdf5File header(file, io::Hdf5File::Mode::read);
+    for (const char* solver : {"fdm", "mpm"})
+      if (const std::string path = header.read_string_attribute("/", std::string(solver) + "_path");
+          !path.empty())
+        named.insert(fs::absolute(dir / "kept" / path).lexically_normal());
+  }
+  EXPECT_EQ(solver_checkpoint_files(dir / "kept"), named);
+  for (const auto& file : named) EXPECT_TRUE(fs::exists(file.string() + ".sha256")) << file;
+  // The two kept: the last of the FDM phase and the FSI phase's, both naming the MPM's.
+  EXPECT_EQ(named.size(), 3u);
+  // A restart from the newest ends as the run that kept them all.
+  const auto restarted = stopped_after(dir / "kept", files.back(), dir / "restarted");
+  EXPECT_EQ(run(scene, restarted, {.restart = true, .overwrite = false})["status"], "completed");
+  expect_same_run(dir / "checkpointed", restarted);
 }
 
 TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_1d_stage_and_fdm_phase) {
