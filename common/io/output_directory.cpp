@@ -18,6 +18,14 @@ void prepare_output_directory(const std::filesystem::path& dir, bool overwrite) 
     throw Error("output path " + dir.string() + " exists and is not a folder");
 }
 
+std::string path_in_run(const std::string& path, const std::filesystem::path& dir) {
+  const std::filesystem::path relative =
+      std::filesystem::absolute(path).lexically_normal().lexically_relative(
+          std::filesystem::absolute(dir).lexically_normal());
+  const bool inside = !relative.empty() && *relative.begin() != "..";
+  return inside ? relative.string() : path;
+}
+
 void write_path_atomically(const std::filesystem::path& file,
                            const std::function<void(const std::filesystem::path&)>& write) {
   std::filesystem::path partial = file;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <string>
 
 namespace mpfd::io {
 
@@ -17,6 +18,11 @@ inline constexpr int kOutputFormatVersion = 1;
 /// to reuse a folder that already holds a run (a summary.json) unless
 /// `overwrite` is set, so an earlier run's results are never lost by mistake.
 void prepare_output_directory(const std::filesystem::path& dir, bool overwrite);
+
+/// `path` relative to the run folder `dir` when it lies in it (a relative `path`
+/// counts from the working folder), else `path` as given: what a record names stays
+/// valid when the folder moves.
+[[nodiscard]] std::string path_in_run(const std::string& path, const std::filesystem::path& dir);
 
 /// Writes `file` through `write` into `file`.tmp, then renames it into place.
 void write_file_atomically(const std::filesystem::path& file,

@@ -14,6 +14,7 @@
 #include "common/core/log.hpp"
 #include "common/core/progress.hpp"
 #include "common/grid/uniform_grid.hpp"
+#include "common/io/output_directory.hpp"
 #include "common/io/run_summary.hpp"
 #include "cosim/arrays.hpp"
 #include "coupler/handoff/detonation_trigger.hpp"
@@ -622,7 +623,8 @@ class AfdmpLoop {
     contact_[peer] = Clock::now();
     // Each solver numbers its own snapshots: list the files that hold this output.
     nlohmann::json files = nlohmann::json::array();
-    for (const auto& file : reply.header.output_written().files()) files.push_back(file);
+    for (const auto& file : reply.header.output_written().files())
+      files.push_back(io::path_in_run(file, options_.out_dir));
     outputs_.push_back(
         {{"index", index}, {"solver", peer}, {"time", report_.time}, {"files", files}});
   }
@@ -647,10 +649,11 @@ class AfdmpLoop {
           << '\n';
     if (!out.flush())
       throw Error("writing the 1D stage's profile '" + (dir / name.str()).string() + "' failed");
-    outputs_.push_back({{"index", index},
-                        {"solver", "spherical"},
-                        {"time", report_.time},
-                        {"files", {(dir / name.str()).string()}}});
+    outputs_.push_back(
+        {{"index", index},
+         {"solver", "spherical"},
+         {"time", report_.time},
+         {"files", {io::path_in_run((dir / name.str()).string(), options_.out_dir)}}});
   }
 
   const config::Scene& scene_;

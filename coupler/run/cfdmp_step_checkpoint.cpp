@@ -1,5 +1,7 @@
 // CfdmpStep's part of a coupled checkpoint (coupler_checkpoint.hpp): what the coupler
 // carries from one step to the next, written after an output's exchange.
+#include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,26 @@ std::vector<handshake::Vec<Dim>> vectors_of(const std::vector<double>& values) {
   for (std::size_t i = 0; i < out.size(); ++i)
     for (int k = 0; k < Dim; ++k) out[i](k) = values[Dim * i + static_cast<std::size_t>(k)];
   return out;
+}
+
+/// A face cell's share of a deposit as "/step/<name>": face cell, share, density,
+/// taken back, particle mass (the face-drain watch's last two deposits).
+void save_drain(RestartWriter& out, const std::string& name, const FaceDrain& drain) {
+  out.array(kStepOwner, name,
+            std::array<double, 5>{static_cast<double>(drain.face_cell), drain.share, drain.density,
+                                  drain.taken_back, drain.particle_mass});
+}
+
+FaceDrain restored_drain(const RestartReader& in, const std::string& name) {
+  const auto v = in.array(kStepOwner, name, 5);
+  if (!(v[0] >= 0 && v[0] < 0x1p53 && v[0] == std::floor(v[0])))
+    in.refuse("holds face cell " + std::to_string(v[0]) + " in /step/" + name +
+              "; expected a whole number >= 0");
+  return {.face_cell = static_cast<std::size_t>(v[0]),
+          .share = v[1],
+          .density = v[2],
+          .taken_back = v[3],
+          .particle_mass = v[4]};
 }
 
 }  // namespace
@@ -66,6 +88,8 @@ void CfdmpStep<Dim>::save(RestartWriter& out) const {
   out.array(kStepOwner, "ghost_cell_energy", ghost_cell_energy_);
   save_totals(out, kStepOwner, "dormant_outflow", dormant_outflow_);
   out.number(kStepOwner, "max_face_drain_share", drain_.run_max_share());
+  save_drain(out, "face_drain_last", drain_.last());
+  save_drain(out, "face_drain_previous", drain_.previous());
 }
 
 template <int Dim>
@@ -99,6 +123,8 @@ void CfdmpStep<Dim>::restore(const RestartReader& in) {
   if (rule.reference_mass != 0.0) rule.check();
   const Totals dormant_outflow = restored_totals(in, kStepOwner, "dormant_outflow");
   const double drain_share = in.number(kStepOwner, "max_face_drain_share");
+  const FaceDrain drain_last = restored_drain(in, "face_drain_last");
+  const FaceDrain drain_previous = restored_drain(in, "face_drain_previous");
   const double next_id = in.number(kStepOwner, "next_id");
   if (!(next_id >= 0 && next_id < 0x1p53))
     in.refuse("holds next_id " + std::to_string(next_id) +
@@ -112,7 +138,7 @@ void CfdmpStep<Dim>::restore(const RestartReader& in) {
   ghost_node_momentum_ = vectors_of<Dim>(ghost_momentum);
   ghost_cell_energy_ = std::move(ghost_energy);
   dormant_outflow_ = dormant_outflow;
-  drain_.resume(drain_share);
+  drain_.resume(drain_last, drain_previous, drain_share);
 }
 
 template void CfdmpStep<1>::save(RestartWriter&) const;

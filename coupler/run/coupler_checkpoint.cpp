@@ -18,20 +18,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// `path` relative to `out_dir` when it lies in it: the run's folder may move between
-/// the checkpoint and the restart. A solver on another host keeps its own path.
-std::string portable(const std::string& path, const fs::path& out_dir) {
-  // A relative path is the solver's (a thread's or child's) from the coupler's folder.
-  const fs::path relative = fs::absolute(path).lexically_normal().lexically_relative(
-      fs::absolute(out_dir).lexically_normal());
-  const bool inside = !relative.empty() && *relative.begin() != "..";
-  return inside ? relative.string() : path;
-}
-
 void write_solver(io::Hdf5File& file, const std::string& name,
                   const std::optional<SolverCheckpoint>& solver, const fs::path& out_dir) {
   file.write_attribute("/", name + "_path",
-                       solver ? portable(solver->path, out_dir) : std::string());
+                       solver ? io::path_in_run(solver->path, out_dir) : std::string());
   file.write_attribute("/", name + "_step",
                        static_cast<std::int64_t>(solver ? solver->step : std::uint64_t{0}));
 }

@@ -36,7 +36,8 @@
 namespace mpfd::coupler {
 
 inline constexpr const char* kCouplerCheckpointFormat = "mpfd-coupler-checkpoint";
-inline constexpr std::int64_t kCouplerCheckpointVersion = 1;
+/// 2 (2026-12-07): AFDMP's "/stage" and the face-drain watch's last two deposits.
+inline constexpr std::int64_t kCouplerCheckpointVersion = 2;
 
 /// A solver's checkpoint as its CheckpointWritten named it.
 struct SolverCheckpoint {

@@ -52,8 +52,14 @@ class FaceDrainWatch {
   }
   /// The largest share any deposit of the run took from a face cell.
   [[nodiscard]] double run_max_share() const { return run_max_share_; }
-  /// A restarted run's watch goes on from the share its checkpoint recorded.
-  void resume(double run_max_share) { run_max_share_ = run_max_share; }
+  /// The deposit before the last one's worst face cell (for a checkpoint).
+  [[nodiscard]] const FaceDrain& previous() const { return previous_; }
+  /// A restarted run's watch goes on from what its checkpoint recorded.
+  void resume(const FaceDrain& last, const FaceDrain& previous, double run_max_share) {
+    last_ = last;
+    previous_ = previous;
+    run_max_share_ = run_max_share;
+  }
   /// Why the FDM cell `cell` (worst()'s, its index and position as text) emptied, when
   /// one of the last two deposits took at least kNamedShare of it; empty otherwise.
   [[nodiscard]] std::string cause_text(const std::string& cell) const;

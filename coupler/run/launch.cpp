@@ -53,6 +53,17 @@ std::filesystem::path program(const std::filesystem::path& given, const std::fil
 
 }  // namespace
 
+std::filesystem::path solver_log_file(const std::filesystem::path& out_dir,
+                                      const std::string& program,
+                                      std::optional<std::int64_t> restart_step) {
+  if (!restart_step) return out_dir / (program + ".log");
+  const std::string stem = program + "_restart_" + std::to_string(*restart_step);
+  std::filesystem::path file = out_dir / (stem + ".log");
+  for (int n = 2; std::filesystem::exists(file); ++n)
+    file = out_dir / (stem + "_" + std::to_string(n) + ".log");
+  return file;
+}
+
 ServeFunction embedded_serve(const std::string& name) {
   if (name == "fdm") return serve_fdm;
   if (name == "mpm") return serve_mpm;
@@ -135,9 +146,9 @@ CoupledRunReport launch_run(const std::filesystem::path& scene_file, const Launc
       std::to_string(std::max({10.0, 4 * launch.timeout_seconds, handoff_seconds}));
   // A restart keeps the stopped run's logs, which may say why it stopped.
   const auto log = [&](const std::string& program) {
-    const std::string restart =
-        options.restart ? "_restart_" + std::to_string(options.restart->step) : "";
-    return (options.out_dir / (program + restart + ".log")).string();
+    return solver_log_file(options.out_dir, program,
+                           options.restart ? std::optional(options.restart->step) : std::nullopt)
+        .string();
   };
   if (launch.mode == LaunchMode::processes) {
     solvers.push_back(start_process(

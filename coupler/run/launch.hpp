@@ -4,6 +4,7 @@
 // external (started by someone else; the coupler binds the given endpoints and
 // waits for them to connect).
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -29,6 +30,14 @@ struct LaunchOptions {
 
 /// Parses "fdm=URL,mpm=URL"; throws mpfd::Error naming a bad entry.
 [[nodiscard]] std::map<std::string, std::string> parse_endpoint_list(const std::string& text);
+
+/// The log of solver program `program` started as a process for a run in `out_dir`:
+/// <program>.log, or for a restart from coupled step `restart_step`
+/// <program>_restart_<step>.log, then _2, _3, ... beside an earlier restart's, so that
+/// no log of the stopped run or of an earlier restart is written over.
+[[nodiscard]] std::filesystem::path solver_log_file(const std::filesystem::path& out_dir,
+                                                    const std::string& program,
+                                                    std::optional<std::int64_t> restart_step);
 
 /// The in-process entry point of solver `name` ("fdm" or "mpm"); throws mpfd::Error otherwise.
 [[nodiscard]] ServeFunction embedded_serve(const std::string& name);

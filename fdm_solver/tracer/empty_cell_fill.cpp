@@ -1,6 +1,8 @@
 #include "fdm_solver/tracer/empty_cell_fill.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "common/core/parallel_for.hpp"
 
@@ -40,13 +42,14 @@ struct CellOrder {
 
 constexpr int kNotOne = -3;  ///< a neighbourhood column holding more than one class
 
-/// Marks kUnassigned in `map` every empty cell of row (j, k) whose 3 x 3 x 3
-/// neighbourhood (within the grid) did not hold one material in `previous`. The
-/// neighbourhood's columns along x (3 x 3 cells each) are read once per row.
-void mark_row(const CellOrder& order, std::size_t j, std::size_t k, const TracerBins& bins,
-              const MaterialMap& previous, MaterialMap& map) {
-  const std::size_t j0 = j > 0 ? j - 1 : j, j1 = j + 1 < order.n[1] ? j + 1 : j;
-  const std::size_t k0 = k > 0 ? k - 1 : k, k1 = k + 1 < order.n[2] ? k + 1 : k;
+/// Marks kUnassigned in `map` every empty cell of row (j, k) whose neighbourhood of
+/// reach `reach` (within the grid) did not hold one material in `previous`. The
+/// neighbourhood's columns along x ((2 reach + 1)^2 cells each) are read once per row
+/// into a window of the last 2 reach + 1.
+void mark_row(const CellOrder& order, std::size_t j, std::size_t k, std::size_t reach,
+              const TracerBins& bins, const MaterialMap& previous, MaterialMap& map) {
+  const std::size_t j0 = j > reach ? j - reach : 0, j1 = std::min(j + reach, order.n[1] - 1);
+  const std::size_t k0 = k > reach ? k - reach : 0, k1 = std::min(k + reach, order.n[2] - 1);
   const auto column = [&](std::size_t i) {  // its one class, or kNotOne
     const int first = previous.material[i + j0 * order.stride[1] + k0 * order.stride[2]];
     for (std::size_t kk = k0; kk <= k1; ++kk)
@@ -55,32 +58,46 @@ void mark_row(const CellOrder& order, std::size_t j, std::size_t k, const Tracer
           return kNotOne;
     return first;
   };
+  const std::size_t nx = order.n[0];
+  const std::size_t width = 2 * reach + 1;
+  std::array<int, 2 * kMaxFillReach + 1> window{};  // column i + d at [(i + d) % width]
+  for (std::size_t i = 0; i < std::min(reach, nx); ++i) window[i % width] = column(i);
   const std::size_t row = j * order.stride[1] + k * order.stride[2];
-  int here = column(0);
-  int left = here;  // no neighbour: nothing else can come from there
-  for (std::size_t i = 0; i < order.n[0]; ++i) {
-    const int right = i + 1 < order.n[0] ? column(i + 1) : here;
-    const bool one_material = here >= 0 && left == here && right == here;
+  for (std::size_t i = 0; i < nx; ++i) {
+    if (i + reach < nx) window[(i + reach) % width] = column(i + reach);
+    const int here = window[i % width];
+    bool one_material = here >= 0;
+    for (std::size_t c = i > reach ? i - reach : 0;
+         one_material && c <= std::min(i + reach, nx - 1); ++c)
+      one_material = window[c % width] == here;
     if (!one_material && bins.count(row + i) == 0) map.material[row + i] = kUnassigned;
-    left = here;
-    here = right;
   }
 }
 
 }  // namespace
 
 void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
-                      const MaterialMap& previous, MaterialMap& map, FillScratch& scratch) {
+                      const MaterialMap* previous, double cells_moved, MaterialMap& map,
+                      FillScratch& scratch) {
   const std::size_t cells = grid.cell_count();
   bool any_tracer = false;
   for (std::size_t c = 0; c < cells && !any_tracer; ++c) any_tracer = bins.count(c) > 0;
   if (!any_tracer) return;
 
   const CellOrder order(grid);
-  // An empty cell holds previous's class (classify_cells); kept where one material was all round.
-  parallel_for(order.n[1] * order.n[2], [&](std::size_t row) {
-    mark_row(order, row % order.n[1], row / order.n[1], bins, previous, map);
-  });
+  // An empty cell holds previous's class (classify_cells); kept where one material was all
+  // round, as far as a tracer moved.
+  const double reach = std::max(1.0, std::ceil(cells_moved));
+  if (previous != nullptr && reach <= kMaxFillReach) {
+    parallel_for(order.n[1] * order.n[2], [&](std::size_t row) {
+      mark_row(order, row % order.n[1], row / order.n[1], static_cast<std::size_t>(reach), bins,
+               *previous, map);
+    });
+  } else {
+    parallel_for(cells, [&](std::size_t c) {
+      if (bins.count(c) == 0) map.material[c] = kUnassigned;
+    });
+  }
   const auto for_each_neighbour = [&](std::size_t c, const auto& visit) {
     const auto at = order.at(c);
     for (int a = 0; a < 3; ++a) {
@@ -88,7 +105,7 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
       if (at[a] + 1 < order.n[a]) visit(c + order.stride[a]);
     }
   };
-  scratch.reserve(cells);
+  scratch.size_for(cells);
   parallel_for(cells, [&](std::size_t c) {
     bool seed = false;
     if (map.material[c] != kUnassigned)
@@ -110,10 +127,10 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
       queue.push_back(n);
     });
   }
-  // Theta of every filled cell (all are reached: each unassigned region borders a known
-  // cell, as some cell holds tracers); a kept cell's is previous's, one material's.
+  // Theta of every empty cell (the filled ones are all reached: each unassigned region
+  // borders a known cell, as some cell holds tracers).
   parallel_for(cells, [&](std::size_t c) {
-    if (bins.count(c) > 0 || map.material[c] == previous.material[c]) return;
+    if (bins.count(c) > 0) return;
     for (int r = 0; r < map.material_count; ++r)
       map.theta[static_cast<std::size_t>(r) * cells + c] = r == map.material[c] ? 1.0 : 0.0;
   });

@@ -3,16 +3,17 @@
 // material expands strongly (detonation products grow by orders of magnitude
 // in volume), leaving cells inside the expanded material without tracers. The
 // thesis leaves them unclassified. We keep the material of an empty cell whose
-// whole 3 x 3 x 3 neighbourhood held that one material before the step: no
-// tracer moves a whole cell along an axis in one step (CFL < 1), so no other
-// material can have reached it. Every other empty cell, next to where the
-// materials met, takes the material of the nearest cell whose material is known
-// (breadth-first over face neighbours from the tracer cells and the kept cells,
-// in cell order, so the result is deterministic); a mixed source gives its
-// larger material. (Filling every empty cell from the nearest tracer cell, as
-// before 2026-12-07, labelled whole lines of far air as detonation products
-// where a products tracer cell stood out of the cloud's surface.) A grid with no
-// tracer at all is left as it was.
+// whole neighbourhood of reach R held that one material before the step, R the
+// farthest any tracer moved along an axis in the step, rounded up (at least 1;
+// the FDM's step bounds it by 2 cfl cells, docs/fdm.md): no other material can
+// have reached the cell. Every other empty cell, near where the materials met,
+// takes the material of the nearest cell whose material is known (breadth-first
+// over face neighbours from the tracer cells and the kept cells, in cell order,
+// so the result is deterministic); a mixed source gives its larger material.
+// (Filling every empty cell from the nearest tracer cell, as before 2026-12-07,
+// labelled whole lines of far air as detonation products where a products tracer
+// cell stood out of the cloud's surface.) At an import there is no step before:
+// every empty cell is filled. A grid with no tracer at all is left as it was.
 
 #include <cstddef>
 #include <cstdint>
@@ -28,16 +29,23 @@ namespace mpfd::fdm {
 struct FillScratch {
   std::vector<std::size_t> queue;   ///< breadth-first queue
   std::vector<std::uint8_t> seeds;  ///< per cell: a known cell next to an unassigned one
-  /// Sized for `cells` (once).
-  void reserve(std::size_t cells) {
+  /// Sized for `cells` (allocates once).
+  void size_for(std::size_t cells) {
     queue.reserve(cells);
     seeds.resize(cells);
   }
 };
 
+/// Reach R beyond which every empty cell is filled (a step that moved tracers this far
+/// has no neighbourhood to trust cheaply; cfl <= 1 moves them at most 2 cells).
+inline constexpr int kMaxFillReach = 4;
+
 /// Reclassifies the empty cells of `map` (bins.count(c) == 0), which hold the
-/// classification `previous` had before the step (classify_cells).
+/// classification `previous` had before a step in which no tracer moved farther than
+/// `cells_moved` cells along an axis (classify_cells). With `previous` null (an
+/// import), every empty cell is filled.
 void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
-                      const MaterialMap& previous, MaterialMap& map, FillScratch& scratch);
+                      const MaterialMap* previous, double cells_moved, MaterialMap& map,
+                      FillScratch& scratch);
 
 }  // namespace mpfd::fdm

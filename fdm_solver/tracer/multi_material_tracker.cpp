@@ -95,7 +95,7 @@ MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
   next_ = current_;
   pending_tracers_per_axis_ = tracers_per_axis;
   states_ = MaterialStates(current_, density, energy);
-  fill_scratch_.reserve(grid_.cell_count());
+  fill_scratch_.size_for(grid_.cell_count());
 }
 
 MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
@@ -104,7 +104,7 @@ MultiMaterialTracker::MultiMaterialTracker(const grid::UniformGrid& grid,
   if (eos_.empty()) throw Error("multi-material tracker: needs at least one material EOS");
   for (const eos::AnyEos& e : eos_) eos::validate(e);
   restore(std::move(state));
-  fill_scratch_.reserve(grid_.cell_count());
+  fill_scratch_.size_for(grid_.cell_count());
 }
 
 void MultiMaterialTracker::seed_if_pending() const {
@@ -132,7 +132,7 @@ AdvectionReport MultiMaterialTracker::advect(const VelocityView& velocity, doubl
   const AdvectionReport report = advect_tracers(grid_, velocity, dt, faces, tracers_);
   bins_.rebuild(grid_, tracers_, static_cast<int>(eos_.size()));
   classify_cells(grid_, bins_, tracers_, current_, next_);  // T (3-23)
-  fill_empty_cells(grid_, bins_, current_, next_, fill_scratch_);
+  fill_empty_cells(grid_, bins_, &current_, report.max_cells_moved, next_, fill_scratch_);
   std::swap(current_, next_);
   assign_tracer_volumes(grid_, bins_, current_, tracers_);  // T (3-21), (3-22)
   return report;

@@ -43,7 +43,9 @@ AdvectionReport advect_tracers(const grid::UniformGrid& grid, const VelocityView
   check_inputs(grid, v, dt);
   const grid::Vec3 lo = grid.origin();
   const grid::Vec3 hi = grid.upper();
-  const std::size_t leaving = parallel_sum(tracers.size(), [&](std::size_t t) -> std::size_t {
+  const grid::Vec3 dx = grid.spacing();
+  // Moves tracer t; returns 1 if it leaves (or is lost), and its largest move in cells.
+  const auto move = [&](std::size_t t, double& cells_moved) -> std::size_t {
     grid::Vec3 x{tracers.position[0][t], tracers.position[1][t], tracers.position[2][t]};
     const grid::Vec3 u = interpolate_velocity(grid, v, x);  // T (3-10)-(3-12)
     for (int a = 0; a < 3; ++a) {
@@ -53,6 +55,7 @@ AdvectionReport advect_tracers(const grid::UniformGrid& grid, const VelocityView
         tracers.material[t] = kLostTracer;
         return 1;
       }
+      cells_moved = std::max(cells_moved, std::abs(u[a]) * dt / dx[a]);
       x[a] = apply_faces(moved, lo[a], hi[a], faces[2 * a], faces[2 * a + 1]);
       if (std::isnan(x[a])) {
         tracers.material[t] = kRemovedTracer;
@@ -61,12 +64,18 @@ AdvectionReport advect_tracers(const grid::UniformGrid& grid, const VelocityView
     }
     for (int a = 0; a < 3; ++a) tracers.position[a][t] = x[a];
     return 0;
-  });
+  };
+  const auto count = static_cast<std::ptrdiff_t>(tracers.size());
+  std::size_t leaving = 0;
+  double farthest = 0.0;  // the empty-cell fill's reach (empty_cell_fill.hpp)
+#pragma omp parallel for schedule(static) reduction(+ : leaving) reduction(max : farthest) \
+    if (count >= kMinParallelCount)
+  for (std::ptrdiff_t t = 0; t < count; ++t) leaving += move(static_cast<std::size_t>(t), farthest);
   const std::size_t lost = leaving > 0 ? tracers.compact() : 0;
   if (lost > 0)
     throw Error("tracer advection: " + std::to_string(lost) +
                 " tracers reached a non-finite position; the velocity field holds NaN or inf");
-  return {leaving - lost};
+  return {.removed = leaving - lost, .max_cells_moved = farthest};
 }
 
 }  // namespace mpfd::fdm

@@ -24,7 +24,8 @@ enum class TracerFace { outflow, reflect };
 using TracerBoundaries = std::array<TracerFace, 6>;
 
 struct AdvectionReport {
-  std::size_t removed = 0;  ///< tracers that left through an outflow face this step
+  std::size_t removed = 0;       ///< tracers that left through an outflow face this step
+  double max_cells_moved = 0.0;  ///< the largest |u_a dt| / dx_a of any tracer and axis [cells]
 };
 
 /// Moves every tracer by one step dt [s] >= 0 with the cell-centre velocity

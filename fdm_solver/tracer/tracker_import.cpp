@@ -110,7 +110,7 @@ TrackerState tracker_from_points(const grid::UniformGrid& grid, int material_cou
     const MaterialMap previous(fallback_material, material_count);
     classify_cells(grid, bins, state.tracers, previous, map);  // T (3-23)
     FillScratch scratch;
-    fill_empty_cells(grid, bins, previous, map, scratch);
+    fill_empty_cells(grid, bins, nullptr, 0.0, map, scratch);  // no step before: fill them all
     // Mixed cells with their materials' own start: theta_r from it (the carried
     // volumes below follow), e_r and rho_r after the cell-state default.
     for (std::size_t c = 0; c < own_start.size(); ++c) {

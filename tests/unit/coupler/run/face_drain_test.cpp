@@ -48,6 +48,25 @@ TEST(FaceDrainWatch, The_last_two_deposits_count_and_the_run_keeps_its_largest_s
   EXPECT_DOUBLE_EQ(watch.run_max_share(), 0.9);
 }
 
+// A restarted run's watch (its checkpoint keeps the last two deposits' worst cells):
+// an error in the first step after the restart names the cause the run would have.
+TEST(FaceDrainWatch, A_resumed_watch_names_the_cause_as_the_watch_it_was_saved_from) {
+  FaceDrainWatch running;
+  running.start_deposit();
+  running.observe(3, 1.0, -0.9, -0.9 * kCellVolume, kCellVolume);
+  running.start_deposit();
+  running.observe(4, 1.0, -0.1, -0.5 * kCellVolume, kCellVolume);
+  FaceDrainWatch resumed;
+  resumed.resume(running.last(), running.previous(), running.run_max_share());
+  EXPECT_EQ(resumed.worst().face_cell, 3u);
+  EXPECT_NE(resumed.cause_text("(3, 0, 0)"), "");
+  EXPECT_EQ(resumed.cause_text("(3, 0, 0)"), running.cause_text("(3, 0, 0)"));
+  resumed.start_deposit();  // the deposit before the last goes, as in the running watch
+  running.start_deposit();
+  EXPECT_EQ(resumed.cause_text("(4, 0, 0)"), running.cause_text("(4, 0, 0)"));
+  EXPECT_DOUBLE_EQ(resumed.run_max_share(), 0.9);
+}
+
 TEST(FaceDrainWatch, Names_the_cause_only_from_half_the_cells_mass_on) {
   FaceDrainWatch watch;
   watch.start_deposit();

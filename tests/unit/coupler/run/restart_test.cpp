@@ -265,6 +265,9 @@ TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited
   const io::Hdf5File third(checkpoints_of(dir / "checkpointed")[2], io::Hdf5File::Mode::read);
   EXPECT_GT(second.read_attribute("/loop", "removed_particles"), 0.0);
   EXPECT_GT(removed, third.read_attribute("/loop", "removed_particles"));
+  // The face-drain watch's last two deposits (face cell, share, density, taken back, particles).
+  EXPECT_EQ(third.read_dataset("/step/face_drain_last").values.size(), 5u);
+  EXPECT_EQ(third.read_dataset("/step/face_drain_previous").values.size(), 5u);
   restart_from_each(scene);
 
   // --out given relative to the working folder: the solvers' files are found again.
@@ -433,6 +436,21 @@ TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_1d_stage_and_f
   } catch (const Error& error) {
     EXPECT_THAT(error.what(), HasSubstr("holds 3 1D particles (/stage, attribute particles)"));
   }
+}
+
+TEST(CoupledRestart, A_restarts_solver_logs_keep_the_stopped_runs_and_an_earlier_restarts) {
+  const auto dir = fs::temp_directory_path() / "mpfd-restart-test-logs";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  EXPECT_EQ(solver_log_file(dir, "fdm_solver", std::nullopt), dir / "fdm_solver.log");
+  std::ofstream(dir / "fdm_solver.log") << "the stopped run's\n";
+  EXPECT_EQ(solver_log_file(dir, "fdm_solver", 382), dir / "fdm_solver_restart_382.log");
+  std::ofstream(dir / "fdm_solver_restart_382.log") << "the first restart's\n";
+  EXPECT_EQ(solver_log_file(dir, "fdm_solver", 382), dir / "fdm_solver_restart_382_2.log");
+  std::ofstream(dir / "fdm_solver_restart_382_2.log") << "the second restart's\n";
+  EXPECT_EQ(solver_log_file(dir, "fdm_solver", 382), dir / "fdm_solver_restart_382_3.log");
+  EXPECT_EQ(solver_log_file(dir, "mpm_solver", 382), dir / "mpm_solver_restart_382.log");
+  fs::remove_all(dir);
 }
 
 TEST(CoupledRestart, A_restart_that_cannot_be_made_is_refused_and_the_folder_is_unchanged) {

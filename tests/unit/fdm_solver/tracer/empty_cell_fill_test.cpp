@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace mpfd::fdm {
@@ -27,7 +29,7 @@ struct Row {
 
 TEST(EmptyCellFill, AnEmptyCellWhereMaterialsMetTakesTheNearestKnownMaterial) {
   Row row;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
+  fill_empty_cells(row.grid, row.bins, &row.previous, 1.0, row.map, row.scratch);
   EXPECT_EQ(row.map.material[2], 1);  // next to the expanding material 1's tracers
   for (std::size_t c = 0; c < 6; ++c)
     EXPECT_DOUBLE_EQ(row.map.theta[c] + row.map.theta[6 + c], 1.0) << c;
@@ -36,7 +38,7 @@ TEST(EmptyCellFill, AnEmptyCellWhereMaterialsMetTakesTheNearestKnownMaterial) {
 
 TEST(EmptyCellFill, AnEmptyCellInsideOneMaterialKeepsIt) {
   Row row;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
+  fill_empty_cells(row.grid, row.bins, &row.previous, 1.0, row.map, row.scratch);
   // Cells 3 and 4 and both their neighbours were material 0: material 1, two cells
   // away, cannot reach them in one step (the nearest-tracer fill gave cell 3 material 1).
   EXPECT_EQ(row.map.material[3], 0);
@@ -47,7 +49,7 @@ TEST(EmptyCellFill, AnEmptyCellInsideOneMaterialKeepsIt) {
 TEST(EmptyCellFill, CellsHoldingTracersAreUntouched) {
   Row row;
   const MaterialMap before = row.map;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
+  fill_empty_cells(row.grid, row.bins, &row.previous, 1.0, row.map, row.scratch);
   for (const std::size_t c : {0u, 1u, 5u}) EXPECT_EQ(row.map.material[c], before.material[c]);
 }
 
@@ -56,7 +58,7 @@ TEST(EmptyCellFill, AGridWithoutTracersKeepsItsPreviousMaterials) {
   row.tracers = TracerSet{};
   row.bins.rebuild(row.grid, row.tracers, 2);
   const MaterialMap before = row.map;
-  fill_empty_cells(row.grid, row.bins, row.previous, row.map, row.scratch);
+  fill_empty_cells(row.grid, row.bins, &row.previous, 1.0, row.map, row.scratch);
   EXPECT_EQ(row.map.material, before.material);
 }
 
@@ -65,8 +67,12 @@ TEST(EmptyCellFill, AGridWithoutTracersKeepsItsPreviousMaterials) {
 // equation of state then gave that air 76 kPa. A 20 x 5 x 5 grid: products (1) filled
 // x < 5 before the step, air (0) the rest; after it, products tracers in x < 5 and in
 // cell (5, 2, 2), air tracers in the other cells of x = 5.
-TEST(EmptyCellFill, FarAirBeyondAProtrudingProductsCellStaysAir) {
-  const grid::UniformGrid grid{{0, 0, 0}, {20, 5, 5}, {20, 5, 5}};
+/// The far-air case below: 20 x 5 x 5 cells, products (1) filled x < 5 before the step,
+/// air (0) the rest; after it, products tracers in x < 5 and in cell (5, 2, 2), air
+/// tracers in the other cells of x = 5. Returns the filled map for tracers that moved
+/// up to `cells_moved` cells.
+MaterialMap protruding_products(double cells_moved) {
+  const grid::UniformGrid grid{{0, 0, 0}, {1, 1, 1}, {20, 5, 5}};  // cells of 1 m
   const std::size_t cells = grid.cell_count();
   std::vector<int> before(cells, 0);
   TracerSet tracers;
@@ -83,22 +89,54 @@ TEST(EmptyCellFill, FarAirBeyondAProtrudingProductsCellStaysAir) {
   MaterialMap map;
   classify_cells(grid, bins, tracers, previous, map);
   FillScratch scratch;
-  fill_empty_cells(grid, bins, previous, map, scratch);
-  for (int i = 6; i < 20; ++i)
-    EXPECT_EQ(map.material[grid.cell_index({i, 2, 2})], 0) << "cell (" << i << ", 2, 2)";
+  fill_empty_cells(grid, bins, &previous, cells_moved, map, scratch);
+  return map;
+}
+
+std::size_t cell(int i) {
+  return static_cast<std::size_t>(i + 20 * (2 + 5 * 2));
+}  // (i, 2, 2)
+
+// The V4 1D start at 100^3 (2026-12-07): a products tracer cell standing out of the
+// cloud's surface labelled the whole line of far air beyond it as products, whose
+// equation of state then gave that air 76 kPa.
+TEST(EmptyCellFill, FarAirBeyondAProtrudingProductsCellStaysAir) {
+  const MaterialMap map = protruding_products(0.6);
+  for (int i = 6; i < 20; ++i) EXPECT_EQ(map.material[cell(i)], 0) << "cell (" << i << ", 2, 2)";
+}
+
+// Tracers that moved 1.5 cells (cfl 0.75 behind a strong shock): the cell beside the
+// protruding one is within reach of the products that were at x < 5, so it is filled
+// (from the protruding products cell); the air beyond that reach stays air.
+TEST(EmptyCellFill, ATracerMovedFartherWidensTheFilledBandToItsReach) {
+  const MaterialMap map = protruding_products(1.5);
+  EXPECT_EQ(map.material[cell(6)], 1);
+  for (int i = 7; i < 20; ++i) EXPECT_EQ(map.material[cell(i)], 0) << "cell (" << i << ", 2, 2)";
+}
+
+// An import has no step before it: every empty cell takes the nearest known material,
+// whatever the fallback classification said.
+TEST(EmptyCellFill, AtAnImportEveryEmptyCellIsFilled) {
+  Row row;
+  fill_empty_cells(row.grid, row.bins, nullptr, 0.0, row.map, row.scratch);
+  EXPECT_EQ(row.map.material[2], 1);
+  EXPECT_EQ(row.map.material[3], 1);  // equidistant: the lower source cell wins, every time
+  EXPECT_EQ(row.map.material[4], 0);
 }
 
 /// The fill written plainly: Index3 neighbourhoods, the same rule and visiting order.
 /// The solver's must label every cell the same (ties included).
 void reference_fill(const grid::UniformGrid& grid, const TracerBins& bins,
-                    const MaterialMap& previous, MaterialMap& map) {
+                    const MaterialMap* previous_map, int reach, MaterialMap& map) {
   const std::size_t cells = grid.cell_count();
   const auto inside = [&](std::size_t c) {
+    if (previous_map == nullptr) return false;
+    const MaterialMap& previous = *previous_map;
     if (previous.is_mixed(c)) return false;
     const grid::Index3 cell = grid.cell_of_index(c);
-    for (int dk = -1; dk <= 1; ++dk)
-      for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di) {
+    for (int dk = -reach; dk <= reach; ++dk)
+      for (int dj = -reach; dj <= reach; ++dj)
+        for (int di = -reach; di <= reach; ++di) {
           const grid::Index3 n{cell[0] + di, cell[1] + dj, cell[2] + dk};
           bool in_grid = true;
           for (int a = 0; a < 3; ++a) in_grid = in_grid && n[a] >= 0 && n[a] < grid.cells()[a];
@@ -176,14 +214,20 @@ TEST(EmptyCellFill, LabelsEveryCellAsThePlainlyWrittenFill) {
                     unit(random) < 0.5 ? 0 : 1, 1.0);
       TracerBins bins;
       bins.rebuild(grid, tracers, 2);
-      MaterialMap map;
-      classify_cells(grid, bins, tracers, previous, map);
-      MaterialMap expected = map;
-      reference_fill(grid, bins, previous, expected);
-      FillScratch scratch;
-      fill_empty_cells(grid, bins, previous, map, scratch);
-      EXPECT_EQ(map.material, expected.material) << "trial " << trial;
-      EXPECT_EQ(map.theta, expected.theta) << "trial " << trial;
+      MaterialMap classified;
+      classify_cells(grid, bins, tracers, previous, classified);
+      // Tracers that moved 0.3, 1, 1.7 and 2.5 cells (reach 1, 1, 2, 3), and an import.
+      for (const double moved : {0.3, 1.0, 1.7, 2.5, -1.0}) {
+        const bool import = moved < 0;
+        MaterialMap expected = classified;
+        reference_fill(grid, bins, import ? nullptr : &previous,
+                       std::max(1, static_cast<int>(std::ceil(moved))), expected);
+        MaterialMap map = classified;
+        FillScratch scratch;
+        fill_empty_cells(grid, bins, import ? nullptr : &previous, moved, map, scratch);
+        EXPECT_EQ(map.material, expected.material) << "trial " << trial << ", moved " << moved;
+        EXPECT_EQ(map.theta, expected.theta) << "trial " << trial << ", moved " << moved;
+      }
     }
   }
 }
