@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "common/core/require.hpp"
+
 namespace mpfd::cosim {
 
 void write_checkpoint_clock(io::Hdf5File& h5, const CheckpointClock& clock) {
@@ -25,13 +27,16 @@ CheckpointClock read_checkpoint_clock(const CheckpointReader& in, std::uint64_t 
   clock.setup_start_time = h5.read_attribute("/", "setup_start_time");
   if (clock.setup_start_time != setup_start_time)
     in.mismatch("was taken in a zone set up with start_time " +
-                std::to_string(clock.setup_start_time) + " s; Setup gave " +
-                std::to_string(setup_start_time) + " s");
+                shortest_text(clock.setup_start_time) + " s; Setup gave " +
+                shortest_text(setup_start_time) + " s");
   clock.start_time = h5.read_attribute("/", "start_time");
   if (!std::isfinite(clock.start_time))
-    in.mismatch("has start_time " + std::to_string(clock.start_time) +
+    in.mismatch("has start_time " + shortest_text(clock.start_time) +
                 "; it becomes the zone's clock and must be finite");
   clock.solver_time = h5.read_attribute("/", "solver_time");
+  if (!(clock.solver_time >= 0.0) || !std::isfinite(clock.solver_time))
+    in.mismatch("has solver_time " + shortest_text(clock.solver_time) +
+                " s; expected a finite time >= 0 advanced since Setup");
   return clock;
 }
 

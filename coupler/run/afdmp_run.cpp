@@ -353,6 +353,13 @@ class AfdmpLoop {
                   name + "' (/afdmp/" + name + "); these " + (now ? "offer" : "lack") +
                   " it: restart with the solvers of that run");
     machine_.restore(in);
+    const AfdmpPhase phase = machine_.phase();
+    const std::string expected = phase == AfdmpPhase::spherical_detonation ? "spherical"
+                                 : phase == AfdmpPhase::fdm_blast          ? "fdm"
+                                                                           : "mpm";
+    if (holder_ != expected)
+      in.refuse("holds '" + holder_ + "' as the state's holder (/afdmp/holder) in phase " +
+                std::string(phase_name(phase)) + " (/phases); expected '" + expected + "'");
     audit_.restore(in);
     gauges_.restore(in);
     if (holder_ == "spherical") {

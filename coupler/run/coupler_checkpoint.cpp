@@ -185,9 +185,16 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
                           .outputs = at.outputs,
                           .wall_seconds = wall_seconds};
   // All at once: each solver writes while the others do, and none waits idle meanwhile.
+  // Named by the coupled step, in the solver's <output_dir>: each coupler checkpoint has
+  // its own files (an idle solver's step does not move, and a handoff may change its
+  // state without a step, so a name by its own step could overwrite a file an older
+  // coupler checkpoint names).
+  char name[48];
+  std::snprintf(name, sizeof name, "checkpoints/coupled_%06lld.h5",
+                static_cast<long long>(at.step));
   for (const auto& peer : peers) {
     cosim::Message message;
-    message.header.mutable_checkpoint();  // into the solver's <output_dir>/checkpoints
+    message.header.mutable_checkpoint()->set_path(name);
     hub.send(peer, std::move(message));
   }
   for (const auto& peer : peers) {
@@ -208,7 +215,7 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
   return taken;
 }
 
-int prune_checkpoints(const fs::path& out_dir, int keep) {
+int prune_checkpoints(const fs::path& out_dir, int keep) try {
   const auto files = coupler_checkpoint_files(out_dir);
   if (keep <= 0 || files.size() <= static_cast<std::size_t>(keep)) return 0;
   const auto oldest_kept = files.end() - keep;
@@ -227,6 +234,11 @@ int prune_checkpoints(const fs::path& out_dir, int keep) {
     }
   }
   return static_cast<int>(oldest_kept - files.begin());
+} catch (const std::exception& error) {
+  // The checkpoint just taken is complete: a file that cannot go must not stop the run.
+  Logger("coupler").warn("removing old checkpoints in '", (out_dir / "checkpoints").string(),
+                         "' failed: ", error.what(), "; they stay");
+  return 0;
 }
 
 void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,

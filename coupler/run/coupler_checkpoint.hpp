@@ -131,7 +131,8 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
 /// Keeps the newest `keep` coupler checkpoints of <out_dir>/checkpoints (0: all). Each older
 /// one is removed first, then the solver checkpoints (and their .sha256) that it names and no
 /// kept one does, where they lie in `out_dir` (a solver on another host keeps its own).
-/// Returns how many coupler checkpoints were removed.
+/// Returns how many coupler checkpoints were removed; a failure to read or remove one is
+/// logged as a warning (the run goes on with the files that stay).
 int prune_checkpoints(const std::filesystem::path& out_dir, int keep);
 
 /// Sends each solver that has a file in `from` its Restore, all at once, and checks the

@@ -129,14 +129,22 @@ void SphericalMpm::restore(const SphericalParticles& particles, double time) {
     if (field->size() != n)
       refuse("'" + std::string(name) + "' of " + std::to_string(field->size()) +
              " values; expected one per particle, " + std::to_string(n));
-  if (particles.history_stride != particles_.history_stride ||
-      particles.history.size() != n * particles_.history_stride ||
-      particles.deviatoric_stress.size() != n)
-    refuse("a history of stride " + std::to_string(particles.history_stride) + " (expected " +
-           std::to_string(particles_.history_stride) +
-           ") or a stress or history array of another length");
-  if (particles.material != particles_.material)
-    refuse("particles of other layers: their material order differs from this run's seeding");
+  if (particles.history_stride != particles_.history_stride)
+    refuse("a history of stride " + std::to_string(particles.history_stride) + "; expected " +
+           std::to_string(particles_.history_stride) + " (this run's materials)");
+  if (particles.history.size() != n * particles_.history_stride)
+    refuse("a history of " + std::to_string(particles.history.size()) + " values; expected " +
+           std::to_string(n * particles_.history_stride));
+  if (particles.deviatoric_stress.size() != n)
+    refuse(std::to_string(particles.deviatoric_stress.size()) + " stresses; expected " +
+           std::to_string(n));
+  const auto differs = std::mismatch(particles.material.begin(), particles.material.end(),
+                                     particles_.material.begin());
+  if (differs.first != particles.material.end())
+    refuse("particles of other layers: particle " +
+           std::to_string(differs.first - particles.material.begin()) + " has material " +
+           std::to_string(*differs.first) + ", this run's seeding " +
+           std::to_string(*differs.second));
   if (!(time >= 0.0) || !std::isfinite(time))
     refuse("at t = " + std::to_string(time) + " s; expected a finite time >= 0");
   particles_ = particles;

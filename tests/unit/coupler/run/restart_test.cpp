@@ -181,13 +181,12 @@ fs::path stopped_after(const fs::path& from, const fs::path& checkpoint, const f
   for (const auto& file : checkpoints_of(to))
     if (file.filename() > checkpoint.filename()) fs::remove(file);
   for (const char* solver : {"fdm", "mpm"}) {
-    // checkpoint_NNNNNN.h5[.sha256] after the solver's step (none of a solver asleep or retired)
-    const std::string key = solver;
+    // coupled_NNNNNN.h5[.sha256] of later coupled steps
     const fs::path solver_checkpoints = to / solver / "checkpoints";
-    if (!header.read_string_attribute("/", key + "_path").empty())
+    if (fs::is_directory(solver_checkpoints))
       for (const auto& entry : fs::directory_iterator(solver_checkpoints))
-        if (std::stod(entry.path().filename().string().substr(11, 6)) >
-            header.read_attribute("/", key + "_step"))
+        if (std::stod(entry.path().filename().string().substr(8, 6)) >
+            header.read_attribute("/", "step"))
           fs::remove(entry.path());
     for (const auto& name : snapshots(to, solver)) {
       const fs::path file = to / solver / "snapshots" / name;
@@ -277,8 +276,8 @@ TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited
   const auto files = checkpoints_of(relative);
   const io::Hdf5File header(files.back(), io::Hdf5File::Mode::read);
   char expected[64];
-  std::snprintf(expected, sizeof expected, "fdm/checkpoints/checkpoint_%06d.h5",
-                static_cast<int>(header.read_attribute("/", "fdm_step")));
+  std::snprintf(expected, sizeof expected, "fdm/checkpoints/coupled_%06d.h5",
+                static_cast<int>(header.read_attribute("/", "step")));  // the coupled step
   EXPECT_EQ(header.read_string_attribute("/", "fdm_path"), expected);      // relative to the run
   std::ofstream(relative / "summary.json") << R"({"status": "running"})";  // as if stopped
   const auto summary = run(scene, relative, {.restart = true, .overwrite = false});
@@ -363,8 +362,8 @@ std::set<fs::path> solver_checkpoint_files(const fs::path& out) {
 }
 
 TEST(CoupledRestart, Only_the_newest_checkpoints_are_kept_with_the_solver_files_they_name) {
-  // V5 coarse: through the FDM phase every coupler file names the idle MPM's one file,
-  // which must outlive the coupler files that go.
+  // V5 coarse: the MPM holds the plate idle through the FDM phase, then carries the FSI
+  // phase; each coupler checkpoint has its own solver files.
   const auto scene = scene_file("afdmp_steel_plate_2d", "v5keep",
                                 {{"cells: [1000, 500, 1]", "cells: [100, 50, 1]"},
                                  {"end: 3.0e-4", "end: 7.0e-5"},
@@ -386,12 +385,24 @@ TEST(CoupledRestart, Only_the_newest_checkpoints_are_kept_with_the_solver_files_
   }
   EXPECT_EQ(solver_checkpoint_files(dir / "kept"), named);
   for (const auto& file : named) EXPECT_TRUE(fs::exists(file.string() + ".sha256")) << file;
-  // The two kept: the last of the FDM phase and the FSI phase's, both naming the MPM's.
+  // The two kept: the last of the FDM phase (the FDM's and the idle MPM's) and the FSI phase's.
   EXPECT_EQ(named.size(), 3u);
-  // A restart from the newest ends as the run that kept them all.
-  const auto restarted = stopped_after(dir / "kept", files.back(), dir / "restarted");
-  EXPECT_EQ(run(scene, restarted, {.restart = true, .overwrite = false})["status"], "completed");
+  // A restart from the older one (the FDM phase's), taking checkpoints again and keeping
+  // one, ends as the run that kept them all; its FSI-phase checkpoint replaces the stopped
+  // run's, whose solver files go with it.
+  const auto restarted = stopped_after(dir / "kept", files.front(), dir / "restarted");
+  const auto summary =
+      run(scene, restarted,
+          {.checkpoint_every = 1, .checkpoint_keep = 1, .restart = true, .overwrite = false});
+  EXPECT_EQ(summary["status"], "completed");
   expect_same_run(dir / "checkpointed", restarted);
+  const auto left = checkpoints_of(restarted);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].filename(), files.back().filename());
+  const io::Hdf5File last(left[0], io::Hdf5File::Mode::read);
+  EXPECT_EQ(solver_checkpoint_files(restarted),
+            std::set<fs::path>{fs::absolute(restarted / last.read_string_attribute("/", "mpm_path"))
+                                   .lexically_normal()});
 }
 
 TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_1d_stage_and_fdm_phase) {

@@ -65,7 +65,7 @@ TEST(SphericalRestore, Particles_of_another_seeding_are_refused_and_the_solver_k
   EXPECT_THAT(refusal(longer, 0.0), HasSubstr("particles; this run seeds"));
   SphericalParticles reordered = own;
   std::swap(reordered.material.front(), reordered.material.back());
-  EXPECT_THAT(refusal(reordered, 0.0), HasSubstr("material order differs"));
+  EXPECT_THAT(refusal(reordered, 0.0), HasSubstr("particle 0 has material"));
   SphericalParticles short_field = own;
   short_field.temperature.pop_back();
   EXPECT_THAT(refusal(short_field, 0.0), HasSubstr("'temperature'"));
