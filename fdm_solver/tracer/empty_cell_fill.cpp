@@ -89,10 +89,15 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
   // round, as far as a tracer moved.
   const double reach = std::max(1.0, std::ceil(cells_moved));
   if (previous != nullptr && reach <= kMaxFillReach) {
-    parallel_for(order.n[1] * order.n[2], [&](std::size_t row) {
-      mark_row(order, row % order.n[1], row / order.n[1], static_cast<std::size_t>(reach), bins,
+    // Threaded by rows, when the grid (not the row count) is large enough to pay for it.
+    const auto rows = static_cast<std::ptrdiff_t>(order.n[1] * order.n[2]);
+#pragma omp parallel for schedule(static) if (static_cast <std::ptrdiff_t>(cells) >= \
+                                              kMinParallelCount)
+    for (std::ptrdiff_t row = 0; row < rows; ++row) {
+      const auto r = static_cast<std::size_t>(row);
+      mark_row(order, r % order.n[1], r / order.n[1], static_cast<std::size_t>(reach), bins,
                *previous, map);
-    });
+    }
   } else {
     parallel_for(cells, [&](std::size_t c) {
       if (bins.count(c) == 0) map.material[c] = kUnassigned;
