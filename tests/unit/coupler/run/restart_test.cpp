@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -277,7 +278,7 @@ TEST(CoupledRestart, Gas_leaving_the_mpm_zone_across_the_checkpoint_is_deposited
   const io::Hdf5File header(files.back(), io::Hdf5File::Mode::read);
   char expected[64];
   std::snprintf(expected, sizeof expected, "fdm/checkpoints/coupled_%06d.h5",
-                static_cast<int>(header.read_attribute("/", "step")));  // the coupled step
+                static_cast<int>(header.read_attribute("/", "step")));     // the coupled step
   EXPECT_EQ(header.read_string_attribute("/", "fdm_path"), expected);      // relative to the run
   std::ofstream(relative / "summary.json") << R"({"status": "running"})";  // as if stopped
   const auto summary = run(scene, relative, {.restart = true, .overwrite = false});
@@ -441,12 +442,17 @@ TEST(CoupledRestart, An_afdmp_run_from_a_1d_start_restarts_in_its_1d_stage_and_f
     H5Gclose(stage);
     H5Fclose(file);
   }
+  // The refusal shuts down both solvers it started, the MPM too, which the stopped run had
+  // retired: a liveness check (left waiting, an embedded solver ends only at its 60 s idle
+  // timeout; the refusal itself takes under a second).
+  const auto start = std::chrono::steady_clock::now();
   try {
     run(scene, stopped, {.restart = true, .overwrite = false});
     ADD_FAILURE() << "a tampered 1D stage was restarted";
   } catch (const Error& error) {
     EXPECT_THAT(error.what(), HasSubstr("holds 3 1D particles (/stage, attribute particles)"));
   }
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
 }
 
 TEST(CoupledRestart, A_restarts_solver_logs_keep_the_stopped_runs_and_an_earlier_restarts) {
