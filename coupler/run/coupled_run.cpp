@@ -156,13 +156,8 @@ class Loop {
                     " reached at t = " + std::to_string(t) + " s");
       if (watch_.due()) activate(t, n);
       const double next_output = std::min(scene_.time.end, outputs * interval);
-      double dt = step_.stable_dt();
+      const auto [dt, output_now] = step_to_output(t, step_.stable_dt(), next_output);
       count_limit(step_.limited_by());
-      bool output_now = false;
-      if (t + dt >= next_output * (1 - 1e-12)) {
-        dt = next_output - t;
-        output_now = true;
-      }
       ++n;
       hub_.set_clock(static_cast<std::uint64_t>(n), t);
       const auto step_start = Clock::now();

@@ -26,6 +26,17 @@ namespace v1 = cosim::v1;
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// A coupled step from t: `dt`, or the rest up to `next_output` when dt would reach
+/// it (within a relative 1e-12: no sliver step before an output).
+struct StepToOutput {
+  double dt;
+  bool output_now;
+};
+[[nodiscard]] inline StepToOutput step_to_output(double t, double dt, double next_output) {
+  if (t + dt >= next_output * (1 - 1e-12)) return {next_output - t, true};
+  return {dt, false};
+}
+
 /// 16 hex digits, new for every run (proto §5: HelloAck.run_id).
 [[nodiscard]] std::string make_run_id();
 
