@@ -71,8 +71,8 @@ TEST_F(CheckpointClockTest, Another_step_or_setup_start_time_is_refused_naming_b
   EXPECT_THAT(refusal(file, 41, 1.0e-3),
               AllOf(HasSubstr(file.string()), HasSubstr("was taken at step 40"),
                     HasSubstr("the Restore request says step 41")));
-  EXPECT_THAT(refusal(file, 40, 0.0), AllOf(HasSubstr("set up with start_time 0.001 s"),
-                                            HasSubstr("Setup gave 0 s")));
+  EXPECT_THAT(refusal(file, 40, 0.0),
+              AllOf(HasSubstr("set up with start_time 0.001 s"), HasSubstr("Setup gave 0 s")));
 }
 
 TEST_F(CheckpointClockTest, A_start_time_that_is_not_finite_is_refused) {

@@ -135,9 +135,8 @@ TEST_F(FdmCheckpointRefusal, AZoneSetUpAtAnotherStartTimeIsNamedWithBoth) {
   cosim::v1::Checkpoint request;
   request.set_path(folder.string());
   const fs::path file = write_checkpoint(*late, request).path();
-  EXPECT_THAT(refusal(file),
-              AllOf(HasSubstr(file.string()),
-                    HasSubstr("set up with start_time 0.001 s; Setup gave 0 s")));
+  EXPECT_THAT(refusal(file), AllOf(HasSubstr(file.string()),
+                                   HasSubstr("set up with start_time 0.001 s; Setup gave 0 s")));
 }
 
 TEST_F(FdmCheckpointRefusal, AnotherStepIsNamedWithBoth) {
