@@ -1,6 +1,7 @@
 #include "coupler/run/afdmp_loop.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <string>
 
 #include "common/core/error.hpp"

@@ -215,30 +215,47 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
   return taken;
 }
 
-int prune_checkpoints(const fs::path& out_dir, int keep) try {
+int prune_checkpoints(const fs::path& out_dir, int keep) {
+  const Logger logger("coupler");
+  // A file that cannot go must not stop the run: the checkpoint just taken is complete.
+  const auto warn = [&](const fs::path& file, const std::string& why) {
+    logger.warn("cannot remove old checkpoint file '", file.string(), "' (", why, "); it stays");
+  };
   const auto files = coupler_checkpoint_files(out_dir);
   if (keep <= 0 || files.size() <= static_cast<std::size_t>(keep)) return 0;
   const auto oldest_kept = files.end() - keep;
   std::set<fs::path> kept;
-  for (auto file = oldest_kept; file != files.end(); ++file)
-    for (const auto& named : solver_files_of(*file, out_dir)) kept.insert(named);
+  for (auto file = oldest_kept; file != files.end(); ++file) try {
+      for (const auto& named : solver_files_of(*file, out_dir)) kept.insert(named);
+    } catch (const std::exception& error) {
+      warn(*file, std::string("its solver files are unreadable, so none go: ") + error.what());
+      return 0;
+    }
   const fs::path run = fs::absolute(out_dir).lexically_normal();
+  int removed = 0;
   for (auto file = files.begin(); file != oldest_kept; ++file) {
-    const auto named = solver_files_of(*file, out_dir);
-    fs::remove(*file);  // first: a coupler file never names a removed solver file
+    std::vector<fs::path> named;
+    try {
+      named = solver_files_of(*file, out_dir);
+    } catch (const std::exception& error) {
+      warn(*file, error.what());
+      continue;
+    }
+    std::error_code failed;
+    fs::remove(*file, failed);  // first: a coupler file never names a removed solver file
+    if (failed) {
+      warn(*file, failed.message());
+      continue;
+    }
+    ++removed;
     for (const auto& solver_file : named) {
       const fs::path inside = solver_file.lexically_relative(run);
       if (kept.contains(solver_file) || inside.empty() || *inside.begin() == "..") continue;
-      fs::remove(solver_file);
-      fs::remove(solver_file.string() + ".sha256");
+      for (const fs::path& part : {solver_file, fs::path(solver_file.string() + ".sha256")})
+        if (fs::remove(part, failed); failed) warn(part, failed.message());
     }
   }
-  return static_cast<int>(oldest_kept - files.begin());
-} catch (const std::exception& error) {
-  // The checkpoint just taken is complete: a file that cannot go must not stop the run.
-  Logger("coupler").warn("removing old checkpoints in '", (out_dir / "checkpoints").string(),
-                         "' failed: ", error.what(), "; they stay");
-  return 0;
+  return removed;
 }
 
 void restore_solvers(cosim::Hub& hub, const CouplerCheckpoint& from,

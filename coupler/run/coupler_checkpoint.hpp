@@ -118,7 +118,8 @@ void remove_checkpoints(const std::filesystem::path& out_dir);
                                                   const std::string& scene_text, int dimension);
 
 /// Takes a coupled checkpoint at `at`, `wall_seconds` into the run: each of `peers` writes its own
-/// (all at once, waiting `timeout` for each: a large grid outlasts a step's reply), then `save`
+/// as <its output_dir>/checkpoints/coupled_NNNNNN.h5, NNNNNN = at.step (all at once, waiting
+/// `timeout` for each: a large grid outlasts a step's reply), then `save`
 /// writes the coupler's state after the header into <out_dir>/checkpoints/coupler_NNNNNN.h5,
 /// written beside it and renamed into place last. Returns what was written. Throws
 /// mpfd::Error naming a solver that answers otherwise.
@@ -131,8 +132,8 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
 /// Keeps the newest `keep` coupler checkpoints of <out_dir>/checkpoints (0: all). Each older
 /// one is removed first, then the solver checkpoints (and their .sha256) that it names and no
 /// kept one does, where they lie in `out_dir` (a solver on another host keeps its own).
-/// Returns how many coupler checkpoints were removed; a failure to read or remove one is
-/// logged as a warning (the run goes on with the files that stay).
+/// Returns how many coupler checkpoints were removed; a file that cannot be read or
+/// removed is a warning and stays (the run goes on).
 int prune_checkpoints(const std::filesystem::path& out_dir, int keep);
 
 /// Sends each solver that has a file in `from` its Restore, all at once, and checks the

@@ -138,6 +138,9 @@ void SphericalMpm::restore(const SphericalParticles& particles, double time) {
   if (particles.deviatoric_stress.size() != n)
     refuse(std::to_string(particles.deviatoric_stress.size()) + " stresses; expected " +
            std::to_string(n));
+  if (particles.material.size() != n)
+    refuse(std::to_string(particles.material.size()) + " materials; expected one per particle, " +
+           std::to_string(n));
   const auto differs = std::mismatch(particles.material.begin(), particles.material.end(),
                                      particles_.material.begin());
   if (differs.first != particles.material.end())

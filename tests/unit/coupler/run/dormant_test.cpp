@@ -90,11 +90,11 @@ TEST(Dormant, A_zone_that_never_wakes_gets_no_message_after_setup) {
 
 TEST(Dormant, Pings_keep_a_sleeping_solver_past_its_idle_timeout) {
   testing::StillMpm mpm;
-  mpm.idle_timeout_ms = 120;
-  // ~27000 FDM-only steps of 73 us: 0.45 ... 2 s of wall time (three idle timeouts or
-  // more), no request to the MPM; Pings every 50 ms.
-  const auto r = run(tube(2.0e5, false, 2.0), mpm, "long", std::chrono::milliseconds(50));
-  EXPECT_GT(r.report.wall_seconds, 3 * 0.120);
+  mpm.idle_timeout_ms = 150;
+  // ~41000 FDM-only steps of 73 us: 0.7 ... 3 s of wall time (three idle timeouts or
+  // more), no request to the MPM; Pings every 25 ms, six to an idle timeout.
+  const auto r = run(tube(2.0e5, false, 3.0), mpm, "long", std::chrono::milliseconds(25));
+  EXPECT_GT(r.report.wall_seconds, 3 * 0.150);
   EXPECT_EQ(mpm.requests_after_setup.load(), 0);
   EXPECT_TRUE(mpm.shut_down.load());  // still serving at the end (without the Pings: not)
 }

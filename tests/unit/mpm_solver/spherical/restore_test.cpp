@@ -66,6 +66,9 @@ TEST(SphericalRestore, Particles_of_another_seeding_are_refused_and_the_solver_k
   SphericalParticles reordered = own;
   std::swap(reordered.material.front(), reordered.material.back());
   EXPECT_THAT(refusal(reordered, 0.0), HasSubstr("particle 0 has material"));
+  SphericalParticles short_materials = own;
+  short_materials.material.pop_back();
+  EXPECT_THAT(refusal(short_materials, 0.0), HasSubstr("materials; expected one per particle"));
   SphericalParticles short_field = own;
   short_field.temperature.pop_back();
   EXPECT_THAT(refusal(short_field, 0.0), HasSubstr("'temperature'"));
