@@ -74,7 +74,6 @@ void AfdmpLoop::checkpoint(const RunPosition& at, double wall) {
 }
 
 void AfdmpLoop::save(RestartWriter& out) const {
-  out.text("afdmp", "holder", holder_);
   out.number("afdmp", "dt", dt_);
   out.number("afdmp", "fdm_retired", retired_.contains("fdm") ? 1 : 0);
   out.number("afdmp", "mpm_retired", retired_.contains("mpm") ? 1 : 0);
@@ -98,11 +97,6 @@ void AfdmpLoop::save(RestartWriter& out) const {
 
 /// The coupler's state from `in`; returns the solvers retired before the checkpoint.
 std::set<std::string> AfdmpLoop::restore(const RestartReader& in) {
-  const std::string holder = in.text("afdmp", "holder");
-  if (holder != "fdm" && holder != "mpm" && holder != "spherical")
-    in.refuse("holds '" + holder +
-              "' as the state's holder (/afdmp/holder); expected 'fdm', 'mpm' or 'spherical'");
-  holder_ = holder;
   dt_ = in.number("afdmp", "dt");
   std::set<std::string> retired;
   for (const auto& peer : kAfdmpPeers)
@@ -127,13 +121,11 @@ std::set<std::string> AfdmpLoop::restore(const RestartReader& in) {
                 "' (/afdmp/" + name + "); these " + (now ? "offer" : "lack") +
                 " it: restart with the solvers of that run");
   machine_.restore(in);
+  // The phase names who holds the state (a run is never checkpointed once done).
   const AfdmpPhase phase = machine_.phase();
-  const std::string expected = phase == AfdmpPhase::spherical_detonation ? "spherical"
-                               : phase == AfdmpPhase::fdm_blast          ? "fdm"
-                                                                         : "mpm";
-  if (holder_ != expected)
-    in.refuse("holds '" + holder_ + "' as the state's holder (/afdmp/holder) in phase " +
-              std::string(phase_name(phase)) + " (/phases); expected '" + expected + "'");
+  holder_ = phase == AfdmpPhase::spherical_detonation ? "spherical"
+            : phase == AfdmpPhase::fdm_blast          ? "fdm"
+                                                      : "mpm";
   audit_.restore(in);
   gauges_.restore(in);
   if (holder_ == "spherical") {
