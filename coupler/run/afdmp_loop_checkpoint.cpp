@@ -86,9 +86,9 @@ void AfdmpLoop::save(RestartWriter& out) const {
   out.number("afdmp", "phase_steps", static_cast<double>(phase_steps_));
   out.number("afdmp", "phase_wall_seconds", seconds_since(phase_start_));
   // What the solvers offered decides the audit's outflow and the handoffs' material import.
-  out.number("afdmp", "fdm_outflow", outflow_.fdm ? 1 : 0);
-  out.number("afdmp", "mpm_outflow", outflow_.mpm ? 1 : 0);
-  out.number("afdmp", "fdm_material_import", settings_.material_import ? 1 : 0);
+  out.feature("afdmp", "fdm_outflow", outflow_.fdm);
+  out.feature("afdmp", "mpm_outflow", outflow_.mpm);
+  out.feature("afdmp", "fdm_material_import", settings_.material_import);
   machine_.save(out);
   audit_.save(out);
   gauges_.save(out);
@@ -111,15 +111,9 @@ std::set<std::string> AfdmpLoop::restore(const RestartReader& in) {
   phase_start_ =
       Clock::now() - std::chrono::duration_cast<Clock::duration>(
                          std::chrono::duration<double>(in.number("afdmp", "phase_wall_seconds")));
-  const std::pair<const char*, bool> features[] = {
-      {"fdm_outflow", outflow_.fdm},
-      {"mpm_outflow", outflow_.mpm},
-      {"fdm_material_import", settings_.material_import}};
-  for (const auto& [name, now] : features)
-    if ((in.number("afdmp", name) != 0) != now)
-      in.refuse("was written with solvers " + std::string(now ? "without" : "with") + " '" + name +
-                "' (/afdmp/" + name + "); these " + (now ? "offer" : "lack") +
-                " it: restart with the solvers of that run");
+  in.expect_feature("afdmp", "fdm_outflow", outflow_.fdm);
+  in.expect_feature("afdmp", "mpm_outflow", outflow_.mpm);
+  in.expect_feature("afdmp", "fdm_material_import", settings_.material_import);
   machine_.restore(in);
   // The phase names who holds the state (a run is never checkpointed once done).
   const AfdmpPhase phase = machine_.phase();

@@ -70,9 +70,9 @@ void CfdmpStep<Dim>::save(RestartWriter& out) const {
                 std::to_string(removed_mass_.size()) +
                 " removed particles wait); it belongs after an output's exchange");
   // How the parcels are booked depends on these: a restart must find the same.
-  out.number(kStepOwner, "fdm_face_crossing", features_.fdm_face_crossing ? 1 : 0);
-  out.number(kStepOwner, "fdm_outflow", features_.fdm_outflow ? 1 : 0);
-  out.number(kStepOwner, "mpm_outflow", features_.mpm_outflow ? 1 : 0);
+  out.feature(kStepOwner, "fdm_face_crossing", features_.fdm_face_crossing);
+  out.feature(kStepOwner, "fdm_outflow", features_.fdm_outflow);
+  out.feature(kStepOwner, "mpm_outflow", features_.mpm_outflow);
   out.array(kStepOwner, "parcel_mass", parcels_.mass);
   out.array(kStepOwner, "parcel_momentum", flat_vectors<Dim>(parcels_.momentum));
   out.array(kStepOwner, "parcel_energy", parcels_.energy);
@@ -94,15 +94,9 @@ void CfdmpStep<Dim>::save(RestartWriter& out) const {
 
 template <int Dim>
 void CfdmpStep<Dim>::restore(const RestartReader& in) {
-  const std::pair<const char*, bool> features[] = {
-      {"fdm_face_crossing", features_.fdm_face_crossing},
-      {"fdm_outflow", features_.fdm_outflow},
-      {"mpm_outflow", features_.mpm_outflow}};
-  for (const auto& [name, now] : features)
-    if ((in.number(kStepOwner, name) != 0) != now)
-      in.refuse("was written with solvers that " + std::string(now ? "did not offer" : "offered") +
-                " '" + name + "' (protocol v1.1); these " + (now ? "do" : "do not") +
-                ": restart with the solvers of that run");
+  in.expect_feature(kStepOwner, "fdm_face_crossing", features_.fdm_face_crossing);
+  in.expect_feature(kStepOwner, "fdm_outflow", features_.fdm_outflow);
+  in.expect_feature(kStepOwner, "mpm_outflow", features_.mpm_outflow);
   const std::size_t faces = parcels_.size();
   handshake::Parcels<Dim> parcels(faces);
   parcels.mass = in.array(kStepOwner, "parcel_mass", faces);

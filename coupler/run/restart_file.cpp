@@ -32,6 +32,18 @@ void RestartWriter::text(const std::string& owner, const std::string& name,
   file_.write_text("/" + owner + "/" + name, value);  // a dataset: records grow with the run
 }
 
+void RestartWriter::feature(const std::string& owner, const std::string& name, bool offered) {
+  number(owner, name, offered ? 1 : 0);
+}
+
+void RestartReader::expect_feature(const std::string& owner, const std::string& name,
+                                   bool offered) const {
+  if ((number(owner, name) != 0) == offered) return;
+  refuse("was written with solvers that " + std::string(offered ? "did not offer" : "offered") +
+         " '" + name + "' (/" + owner + "/" + name + "); these " + (offered ? "do" : "do not") +
+         ": restart with the solvers of that run");
+}
+
 double RestartReader::number(const std::string& owner, const std::string& name) const {
   if (!file_.exists("/" + owner))
     refuse("has no group '/" + owner + "' (a coupler checkpoint has it)");

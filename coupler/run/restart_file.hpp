@@ -27,6 +27,8 @@ class RestartWriter {
                        std::optional<double> value);
   void array(const std::string& owner, const std::string& name, std::span<const double> values);
   void text(const std::string& owner, const std::string& name, const std::string& value);
+  /// Whether the solvers offered protocol feature `name` (RestartReader::expect_feature).
+  void feature(const std::string& owner, const std::string& name, bool offered);
 
  private:
   void make_group(const std::string& owner);
@@ -49,6 +51,9 @@ class RestartReader {
   [[nodiscard]] std::string text(const std::string& owner, const std::string& name) const;
   /// The text "/<owner>/<name>" parsed as JSON.
   [[nodiscard]] nlohmann::json json(const std::string& owner, const std::string& name) const;
+  /// Refuses unless the solvers that wrote it offered feature `name` as these do (`offered`):
+  /// it decides how the run books what it carries.
+  void expect_feature(const std::string& owner, const std::string& name, bool offered) const;
   /// Throws mpfd::Error "restart: '<file>' <what>".
   [[noreturn]] void refuse(const std::string& what) const;
 
