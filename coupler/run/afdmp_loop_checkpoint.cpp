@@ -60,7 +60,6 @@ bool AfdmpLoop::checkpointed(const std::string& peer, const std::set<std::string
 /// Each solver that holds state checkpoints, then the coupler's file (with the 1D stage's
 /// particles while it runs) is renamed into place last.
 void AfdmpLoop::checkpoint(const RunPosition& at, double wall) {
-  const auto start = Clock::now();
   std::vector<std::string> peers;
   for (const auto& peer : kAfdmpPeers)
     if (checkpointed(peer, retired_)) peers.push_back(peer);
@@ -69,8 +68,6 @@ void AfdmpLoop::checkpoint(const RunPosition& at, double wall) {
                       scene_text_, grid_dimension(scene_), [&](RestartWriter& out) { save(out); });
   for (const auto& peer : peers) contact_[peer] = Clock::now();
   checkpoints_.taken(taken);
-  Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
-                         " s: ", taken.file.string(), " (", seconds_since(start), " s)");
 }
 
 void AfdmpLoop::save(RestartWriter& out) const {

@@ -276,14 +276,10 @@ class Loop {
 
   /// Each awake solver's Checkpoint, then the coupler's file (take_checkpoint).
   void checkpoint(const RunPosition& at, double wall) {
-    const auto start = Clock::now();
     if (watch_.dormant()) keep_mpm_alive();  // it takes no Checkpoint, so no message meanwhile
-    const auto taken = take_checkpoint(
+    checkpoints_.taken(take_checkpoint(
         hub_, at, wall, options_.out_dir, peers(), options_.handoff_timeout, scene_text_,
-        grid_dimension(scene_), [&](RestartWriter& out) { save(out); });
-    checkpoints_.taken(taken);
-    Logger("coupler").info("checkpoint at step ", taken.step, ", t = ", taken.time,
-                           " s: ", taken.file.string(), " (", seconds_since(start), " s)");
+        grid_dimension(scene_), [&](RestartWriter& out) { save(out); }));
   }
 
   void save(RestartWriter& out) const {

@@ -179,6 +179,7 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
                                   const fs::path& out_dir, const std::vector<std::string>& peers,
                                   std::chrono::milliseconds timeout, const std::string& scene_text,
                                   int dimension, const std::function<void(RestartWriter&)>& save) {
+  const auto start = std::chrono::steady_clock::now();
   CouplerCheckpoint taken{.file = coupler_checkpoint_file(out_dir, at.step),
                           .step = at.step,
                           .time = at.time,
@@ -212,6 +213,9 @@ CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double
     RestartWriter out(file);
     save(out);
   });
+  Logger("coupler").info(
+      "checkpoint at step ", taken.step, ", t = ", taken.time, " s: ", taken.file.string(), " (",
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), " s)");
   return taken;
 }
 

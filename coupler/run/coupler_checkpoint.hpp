@@ -121,8 +121,8 @@ void remove_checkpoints(const std::filesystem::path& out_dir);
 /// as <its output_dir>/checkpoints/coupled_NNNNNN.h5, NNNNNN = at.step (all at once, waiting
 /// `timeout` for each: a large grid outlasts a step's reply), then `save`
 /// writes the coupler's state after the header into <out_dir>/checkpoints/coupler_NNNNNN.h5,
-/// written beside it and renamed into place last. Returns what was written. Throws
-/// mpfd::Error naming a solver that answers otherwise.
+/// written beside it and renamed into place last, and logs it with its wall time. Returns what
+/// was written. Throws mpfd::Error naming a solver that answers otherwise.
 CouplerCheckpoint take_checkpoint(cosim::Hub& hub, const RunPosition& at, double wall_seconds,
                                   const std::filesystem::path& out_dir,
                                   const std::vector<std::string>& peers,
