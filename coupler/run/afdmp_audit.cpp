@@ -1,7 +1,9 @@
 #include "coupler/run/afdmp_audit.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "common/grid/uniform_grid.hpp"
 #include "coupler/handoff/placeholder.hpp"
@@ -128,15 +130,19 @@ Conserved restored_conserved(const RestartReader& in, const std::string& owner,
   return {.mass = v[0], .momentum = {v[1], v[2], v[3]}, .energy = v[4], .momentum_scale = v[5]};
 }
 
+template <class Audit>
+auto RunLongAudit::named_terms(Audit& audit) {
+  return std::array{std::pair{"initial", &audit.initial_},
+                    std::pair{"fdm", &audit.fdm_},
+                    std::pair{"mpm", &audit.mpm_},
+                    std::pair{"stage", &audit.stage_},
+                    std::pair{"placeholder", &audit.placeholder_},
+                    std::pair{"fdm_outflow", &audit.fdm_outflow_},
+                    std::pair{"mpm_outflow", &audit.mpm_outflow_}};
+}
+
 void RunLongAudit::save(RestartWriter& out) const {
-  const std::pair<const char*, const Conserved*> terms[] = {{"initial", &initial_},
-                                                            {"fdm", &fdm_},
-                                                            {"mpm", &mpm_},
-                                                            {"stage", &stage_},
-                                                            {"placeholder", &placeholder_},
-                                                            {"fdm_outflow", &fdm_outflow_},
-                                                            {"mpm_outflow", &mpm_outflow_}};
-  for (const auto& [name, term] : terms) save_conserved(out, "audit", name, *term);
+  for (const auto& [name, term] : named_terms(*this)) save_conserved(out, "audit", name, *term);
   nlohmann::json names = nlohmann::json::array();
   for (const auto& [name, amount] : dropped_) {
     names.push_back(name);
@@ -147,14 +153,7 @@ void RunLongAudit::save(RestartWriter& out) const {
 
 void RunLongAudit::restore(const RestartReader& in) {
   RunLongAudit back;
-  const std::pair<const char*, Conserved*> terms[] = {{"initial", &back.initial_},
-                                                      {"fdm", &back.fdm_},
-                                                      {"mpm", &back.mpm_},
-                                                      {"stage", &back.stage_},
-                                                      {"placeholder", &back.placeholder_},
-                                                      {"fdm_outflow", &back.fdm_outflow_},
-                                                      {"mpm_outflow", &back.mpm_outflow_}};
-  for (const auto& [name, term] : terms) *term = restored_conserved(in, "audit", name);
+  for (const auto& [name, term] : named_terms(back)) *term = restored_conserved(in, "audit", name);
   for (const auto& name : in.json("audit", "dropped"))
     back.dropped_[name] = restored_conserved(in, "audit", "dropped_" + name.get<std::string>());
   *this = std::move(back);

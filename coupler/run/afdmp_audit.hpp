@@ -107,6 +107,10 @@ class RunLongAudit {
   void restore(const RestartReader& in);
 
  private:
+  /// The terms held whole, by name, as a checkpoint writes them (const or not with `Audit`).
+  template <class Audit>
+  static auto named_terms(Audit& audit);
+
   Conserved initial_;
   Conserved fdm_, mpm_, stage_, placeholder_;
   Conserved fdm_outflow_, mpm_outflow_;
