@@ -42,12 +42,12 @@ struct CellOrder {
 
 constexpr int kNotOne = -3;  ///< a neighbourhood column holding more than one class
 
-/// Marks kUnassigned in `map` every empty cell of row (j, k) whose neighbourhood of
+/// Marks kUnassigned in `map` (and counts) every empty cell of row (j, k) whose neighbourhood of
 /// reach `reach` (within the grid) did not hold one material in `previous`. The
 /// neighbourhood's columns along x ((2 reach + 1)^2 cells each) are read once per row
 /// into a window of the last 2 reach + 1.
-void mark_row(const CellOrder& order, std::size_t j, std::size_t k, std::size_t reach,
-              const TracerBins& bins, const MaterialMap& previous, MaterialMap& map) {
+std::size_t mark_row(const CellOrder& order, std::size_t j, std::size_t k, std::size_t reach,
+                     const TracerBins& bins, const MaterialMap& previous, MaterialMap& map) {
   const std::size_t j0 = j > reach ? j - reach : 0, j1 = std::min(j + reach, order.n[1] - 1);
   const std::size_t k0 = k > reach ? k - reach : 0, k1 = std::min(k + reach, order.n[2] - 1);
   const auto column = [&](std::size_t i) {  // its one class, or kNotOne
@@ -63,6 +63,7 @@ void mark_row(const CellOrder& order, std::size_t j, std::size_t k, std::size_t 
   std::array<int, 2 * kMaxFillReach + 1> window{};  // column i + d at [(i + d) % width]
   for (std::size_t i = 0; i < std::min(reach, nx); ++i) window[i % width] = column(i);
   const std::size_t row = j * order.stride[1] + k * order.stride[2];
+  std::size_t marked = 0;
   for (std::size_t i = 0; i < nx; ++i) {
     if (i + reach < nx) window[(i + reach) % width] = column(i + reach);
     const int here = window[i % width];
@@ -70,8 +71,12 @@ void mark_row(const CellOrder& order, std::size_t j, std::size_t k, std::size_t 
     for (std::size_t c = i > reach ? i - reach : 0;
          one_material && c <= std::min(i + reach, nx - 1); ++c)
       one_material = window[c % width] == here;
-    if (!one_material && bins.count(row + i) == 0) map.material[row + i] = kUnassigned;
+    if (!one_material && bins.count(row + i) == 0) {
+      map.material[row + i] = kUnassigned;
+      ++marked;
+    }
   }
+  return marked;
 }
 
 }  // namespace
@@ -88,21 +93,25 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
   // An empty cell holds previous's class (classify_cells); kept where one material was all
   // round, as far as a tracer moved.
   const double reach = std::max(1.0, std::ceil(cells_moved));
+  std::size_t unassigned = 0;
   if (previous != nullptr && reach <= kMaxFillReach) {
     // Threaded by rows, when the grid (not the row count) is large enough to pay for it.
     const auto rows = static_cast<std::ptrdiff_t>(order.n[1] * order.n[2]);
-#pragma omp parallel for schedule(static) if (static_cast <std::ptrdiff_t>(cells) >= \
-                                              kMinParallelCount)
+    const bool threaded = static_cast<std::ptrdiff_t>(cells) >= kMinParallelCount;
+#pragma omp parallel for schedule(static) reduction(+ : unassigned) if (threaded)
     for (std::ptrdiff_t row = 0; row < rows; ++row) {
       const auto r = static_cast<std::size_t>(row);
-      mark_row(order, r % order.n[1], r / order.n[1], static_cast<std::size_t>(reach), bins,
-               *previous, map);
+      unassigned += mark_row(order, r % order.n[1], r / order.n[1], static_cast<std::size_t>(reach),
+                             bins, *previous, map);
     }
   } else {
-    parallel_for(cells, [&](std::size_t c) {
-      if (bins.count(c) == 0) map.material[c] = kUnassigned;
+    unassigned = parallel_sum(cells, [&](std::size_t c) -> std::size_t {
+      if (bins.count(c) > 0) return 0;
+      map.material[c] = kUnassigned;
+      return 1;
     });
   }
+  if (unassigned == 0) return;  // every empty cell kept previous's class and fractions
   const auto for_each_neighbour = [&](std::size_t c, const auto& visit) {
     const auto at = order.at(c);
     for (int a = 0; a < 3; ++a) {
