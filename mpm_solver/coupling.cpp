@@ -10,6 +10,20 @@
 #include "mpm_solver/mpm_solver.hpp"
 
 namespace mpfd::mpm {
+namespace {
+
+/// Throws naming `which()` unless x is finite and, on an active axis a, on the
+/// grid [origin, upper): a particle off it has no nodes to map to.
+template <class Which>
+void require_on_grid(const grid::UniformGrid& g, double x, int a, const Which& which) {
+  const double upper = g.upper()[a];
+  if (!std::isfinite(x) || (g.is_active(a) && (x < g.origin()[a] || x >= upper)))
+    throw Error(which() + ": position " + std::to_string(x) + " m on axis " + std::to_string(a) +
+                " is off the grid [" + std::to_string(g.origin()[a]) + ", " +
+                std::to_string(upper) + ")");
+}
+
+}  // namespace
 
 ConstitutiveModel& MpmSolver::model_for(std::size_t material) {
   if (!models_[material]) {
@@ -61,7 +75,6 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
   const std::size_t n = batch.size();
   const bool with_stress = !batch.stress.empty();
   const auto& g = grid();
-  const grid::Vec3 upper = g.upper();
   for (std::size_t i = 0; i < n; ++i) {
     // Named only when refused: a string per particle was most of an injection's cost.
     const auto which = [&] {
@@ -75,13 +88,8 @@ void MpmSolver::inject_particles(const ParticleBatch& batch) {
     if (batch.material[i] >= materials_.size())
       throw Error(which() + ": material " + std::to_string(batch.material[i]) +
                   " is not one of the scene's " + std::to_string(materials_.size()));
-    for (int a = 0; a < 3; ++a) {
-      const double x = batch.position[3 * i + static_cast<std::size_t>(a)];
-      if (!std::isfinite(x) || (g.is_active(a) && (x < g.origin()[a] || x >= upper[a])))
-        throw Error(which() + ": position " + std::to_string(x) + " m on axis " +
-                    std::to_string(a) + " is off the grid [" + std::to_string(g.origin()[a]) +
-                    ", " + std::to_string(upper[a]) + ")");
-    }
+    for (int a = 0; a < 3; ++a)
+      require_on_grid(g, batch.position[3 * i + static_cast<std::size_t>(a)], a, which);
   }
   for (std::size_t i = 0; i < n; ++i) model_for(batch.material[i]);  // may throw: before growing
   const std::size_t first = particles_.size();
@@ -326,6 +334,10 @@ void MpmSolver::restore(ParticleSet particles, std::span<const std::size_t> inje
                   std::to_string(particles.body[p]) + " and material " +
                   std::to_string(particles.material[p]) + "; there are " + std::to_string(bodies) +
                   " bodies and " + std::to_string(materials_.size()) + " materials");
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    for (int a = 0; a < 3; ++a)
+      require_on_grid(grid(), particles.position[a][p], a,
+                      [p] { return "restore: particle " + std::to_string(p); });
   // Models only widen the running particles' history (same values): the state is unchanged.
   for (std::size_t p = 0; p < particles.size(); ++p) model_for(particles.material[p]);
   if (particles.history_stride != particles_.history_stride)

@@ -106,6 +106,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
   if (request.path().empty()) refuse("Restore: no path given");
   const fs::path file = resolve(zone, request.path(), "Restore");
   if (!fs::is_regular_file(file)) refuse("Restore: '" + file.string() + "' is not a file");
+  bool changed = false;  // once the solver holds the checkpoint's state
   try {
     verify_digest(file);
     CheckpointContents back = read_checkpoint_file(file, zone, request.step());
@@ -118,11 +119,13 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     zone.solver.restore(back.state, back.clock.solver_time, back.clock.steps, back.outflow,
                         back.face_outflow,
                         std::move(back.tracker));  // checks before it changes anything
+    changed = true;
     zone.start_time = back.clock.start_time;
     zone.output.resume(back.snapshot_history, zone.solver.state().grid);
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {
+    if (changed) throw cosim::half_restored("fdm_solver", file.string(), error.what());
     refuse("Restore from '" + file.string() + "' failed: " + error.what());
   }
   cosim::v1::Restored restored;

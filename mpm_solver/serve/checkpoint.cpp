@@ -113,6 +113,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
   if (request.path().empty()) refuse("Restore: no path given");
   const fs::path file = resolve(zone, request.path(), "Restore");
   if (!fs::is_regular_file(file)) refuse("Restore: '" + file.string() + "' is not a file");
+  bool changed = false;  // once the solver holds the checkpoint's particles
   try {
     verify_digest(file);
     CheckpointContents back = read_checkpoint_file(file, zone, request.step());
@@ -125,6 +126,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
     zone.solver.restore(std::move(back.particles), back.injected_body_materials,
                         back.clock.solver_time, back.clock.steps, back.ledger,
                         back.particle_updates);  // checks before it changes anything
+    changed = true;
     // The running zone adds its later injections to its map: so must this one.
     zone.next_step_map_seconds = 0.0;
     if (back.next_step_map_box) {
@@ -139,6 +141,7 @@ cosim::v1::Restored restore_checkpoint(ServedZone& zone, const cosim::v1::Restor
   } catch (const cosim::ProtocolError&) {
     throw;
   } catch (const std::exception& error) {
+    if (changed) throw cosim::half_restored("mpm_solver", file.string(), error.what());
     refuse("Restore from '" + file.string() + "' failed: " + error.what());
   }
   cosim::v1::Restored restored;

@@ -1,6 +1,7 @@
 // Checkpoint and Restore of fdm_solver serve (proto/README.md §8): a restored
 // solver, one- or two-material, continues bit for bit; a file from another
-// grid is refused by name, and the solver carries on.
+// grid is refused by name, and the solver carries on; a Restore that fails
+// after it replaced the state stops the solver.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -151,6 +152,30 @@ TEST(FdmServeCheckpoint, RestoreOfAFileFromAnotherGridNamesTheFileAndBothCellCou
   EXPECT_EQ(advance(thirty, 0.0, 1), kDt);
   thirty.shut_down();
   EXPECT_EQ(thirty.last_shutdown().steps_done(), 1U);
+}
+
+// The snapshot series resumes after the state is restored; where it cannot
+// (a file stands where the snapshots folder goes), the zone holds the
+// checkpoint's cells with its Setup's snapshot state: fatal, not a refusal.
+TEST(FdmServeCheckpoint, ARestoreThatFailsAfterReplacingTheStateStopsTheSolver) {
+  const TempDir dir("half");
+  const auto first_dir = dir.path() / "first", second_dir = dir.path() / "second";
+  ServedFdm first;
+  first.request(setup(sod_text(20), {}, first_dir.string()));
+  cosim::Message output;
+  output.header.mutable_write_output();
+  first.request(std::move(output));
+  const std::string file = first.request(checkpoint_to("")).header.checkpoint_written().path();
+  first.shut_down();
+
+  std::filesystem::create_directories(second_dir);
+  std::ofstream(second_dir / "snapshots") << "not a folder";
+  ServedFdm second;
+  second.request(setup(sod_text(20), {}, second_dir.string()));
+  EXPECT_THAT(second.refusal(restore_from(file, 0)),
+              AllOf(HasSubstr("failed after the state was replaced"),
+                    HasSubstr("neither its Setup's nor the checkpoint's")));
+  EXPECT_THAT(second.stop_reason(), HasSubstr("ERROR_CODE_IO"));
 }
 
 TEST(FdmServeCheckpoint,

@@ -1,7 +1,8 @@
 // Checkpoint and Restore of `mpm_solver serve`: a zone restored from a
 // checkpoint (injected particles included) continues bit for bit as the one
 // that wrote it; a checkpoint whose bytes no longer match its .sha256 is
-// refused and the running state stays as it was.
+// refused and the running state stays as it was; a Restore that fails after
+// it replaced the particles stops the solver, which holds a mixture.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -277,6 +278,38 @@ TEST_F(MpmServeCheckpoint, ACorruptedCheckpointIsRefusedAndTheStateKept) {
   EXPECT_THAT(served.refusal(std::move(restore)), HasSubstr("SHA-256"));
   run(served, clock, 1);  // non-fatal: the zone carries on from step 5
   EXPECT_EQ(served.shut_down().steps_done(), 6U);
+}
+
+// The snapshot series resumes after the particles are restored; where it
+// cannot (here a file stands where the snapshots folder goes), the zone holds
+// the checkpoint's particles with its Setup's snapshot state: the error is
+// fatal, not a refusal the coupler could step on from.
+TEST_F(MpmServeCheckpoint, ARestoreThatFailsAfterReplacingTheParticlesStopsTheSolver) {
+  const auto first_dir = dir_ / "first", second_dir = dir_ / "second";
+  ServedMpm first;
+  Clock clock{0.0, first.request(setup(blast_text(), regions_with_all(), first_dir.string()))
+                       .header.setup_ack()
+                       .stable_dt()};
+  run(first, clock, 3);
+  cosim::Message output;
+  output.header.mutable_write_output();
+  first.request(std::move(output));
+  cosim::Message checkpoint;
+  checkpoint.header.mutable_checkpoint()->set_path("cp");
+  const auto written = first.request(std::move(checkpoint)).header.checkpoint_written();
+  first.shut_down();
+
+  std::filesystem::create_directories(second_dir);
+  std::ofstream(second_dir / "snapshots") << "not a folder";
+  ServedMpm second;
+  second.request(setup(blast_text(), regions_with_all(), second_dir.string()));
+  cosim::Message restore;
+  restore.header.mutable_restore()->set_path(written.path());
+  restore.header.mutable_restore()->set_step(3);
+  EXPECT_THAT(second.refusal(std::move(restore)),
+              AllOf(HasSubstr("failed after the state was replaced"),
+                    HasSubstr("neither its Setup's nor the checkpoint's")));
+  EXPECT_THAT(second.stop_reason(), HasSubstr("ERROR_CODE_IO"));
 }
 
 }  // namespace
