@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
+#include "common/core/error.hpp"
 #include "common/core/parallel_for.hpp"
+#include "common/core/require.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -93,8 +96,14 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
   // An empty cell holds previous's class (classify_cells); kept where one material was all
   // round, as far as a tracer moved.
   const double reach = std::max(1.0, std::ceil(cells_moved));
+  if (previous != nullptr && reach > kMaxFillReach)
+    throw Error("empty-cell fill: a tracer moved " + shortest_text(cells_moved) +
+                " cells along an axis in one step, beyond the fill's reach of " +
+                std::to_string(kMaxFillReach) +
+                "; a step within the FDM's stable dt (cfl <= 1) moves tracers at most 2 cells, "
+                "so this step was longer than the FDM's stable dt");
   std::size_t unassigned = 0;
-  if (previous != nullptr && reach <= kMaxFillReach) {
+  if (previous != nullptr) {
     // Threaded by rows, when the grid (not the row count) is large enough to pay for it.
     const auto rows = static_cast<std::ptrdiff_t>(order.n[1] * order.n[2]);
     const bool threaded = static_cast<std::ptrdiff_t>(cells) >= kMinParallelCount;

@@ -36,14 +36,15 @@ struct FillScratch {
   }
 };
 
-/// Reach R beyond which every empty cell is filled (a step that moved tracers this far
-/// has no neighbourhood to trust cheaply; cfl <= 1 moves them at most 2 cells).
+/// The farthest reach R the fill looks across (cfl <= 1 moves tracers at most 2 cells;
+/// a step that moved them farther than this is refused).
 inline constexpr int kMaxFillReach = 4;
 
 /// Reclassifies the empty cells of `map` (bins.count(c) == 0), which hold the
 /// classification `previous` had before a step in which no tracer moved farther than
 /// `cells_moved` cells along an axis (classify_cells). With `previous` null (an
-/// import), every empty cell is filled.
+/// import), every empty cell is filled. Throws mpfd::Error if `cells_moved` is beyond
+/// kMaxFillReach (and `previous` is given): the step was longer than the FDM's stable dt.
 void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
                       const MaterialMap* previous, double cells_moved, MaterialMap& map,
                       FillScratch& scratch);

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+
+#include "common/core/error.hpp"
 
 namespace mpfd::fdm {
 namespace {
@@ -112,6 +115,20 @@ TEST(EmptyCellFill, ATracerMovedFartherWidensTheFilledBandToItsReach) {
   const MaterialMap map = protruding_products(1.5);
   EXPECT_EQ(map.material[cell(6)], 1);
   for (int i = 7; i < 20; ++i) EXPECT_EQ(map.material[cell(i)], 0) << "cell (" << i << ", 2, 2)";
+}
+
+// A step that moved a tracer farther than the fill looks (kMaxFillReach) was longer
+// than the FDM's stable dt: refused, naming the move, not filled from a neighbourhood
+// the fill did not read.
+TEST(EmptyCellFill, AMoveBeyondTheFillsReachIsRefused) {
+  EXPECT_NO_THROW(protruding_products(kMaxFillReach));
+  try {
+    protruding_products(kMaxFillReach + 0.25);
+    FAIL() << "a move of 4.25 cells was filled";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("a tracer moved 4.25 cells"), std::string::npos)
+        << error.what();
+  }
 }
 
 // An import has no step before it: every empty cell takes the nearest known material,
