@@ -23,15 +23,4 @@ class ProtocolError : public Error {
   bool fatal_;
 };
 
-/// A Restore that failed after the solver's state was replaced: the zone holds
-/// neither its Setup's state nor the checkpoint's, so the error is fatal and
-/// `program` stops rather than serve a mixture.
-[[nodiscard]] inline ProtocolError half_restored(const std::string& program,
-                                                 const std::string& file, const std::string& what) {
-  return {cosim::v1::ERROR_CODE_IO,
-          "Restore from '" + file + "' failed after the state was replaced: " + what +
-              "; the zone is neither its Setup's nor the checkpoint's, so " + program + " stops",
-          true};
-}
-
 }  // namespace mpfd::cosim
