@@ -10,17 +10,31 @@
 namespace mpfd::coupler::handoff {
 namespace {
 
-/// Sums of the particles of one cell, per material: m_r, V_r, E_r.
-struct MaterialSums {
-  std::vector<double> mass, volume, energy;  // [c * materials + r]
-  std::vector<int> particles;                // per cell and material, how many
-};
+void require_size(std::size_t got, std::size_t want, const char* name) {
+  if (got != want)
+    throw Error(std::string("material start: ") + name + " must have " + std::to_string(want) +
+                " entries, got " + std::to_string(got));
+}
 
-MaterialSums sum_per_material(const grid::UniformGrid& grid, const ParticleView& particles,
-                              std::span<const double> volume, int materials) {
-  const std::size_t rows = grid.cell_count() * static_cast<std::size_t>(materials);
-  MaterialSums sums{std::vector<double>(rows, 0.0), std::vector<double>(rows, 0.0),
-                    std::vector<double>(rows, 0.0), std::vector<int>(rows, 0)};
+enum class CellKind { empty, single, mixed, mixed_fallback };
+
+}  // namespace
+
+MaterialSums::MaterialSums(std::size_t cells, int materials) : material_count(materials) {
+  if (materials < 1)
+    throw Error("material start: material_count must be >= 1, got " + std::to_string(materials));
+  const std::size_t rows = cells * static_cast<std::size_t>(materials);
+  mass.assign(rows, 0.0);
+  volume.assign(rows, 0.0);
+  energy.assign(rows, 0.0);
+  contributors.assign(rows, 0);
+}
+
+MaterialSums particle_material_sums(const grid::UniformGrid& grid, const ParticleView& particles,
+                                    std::span<const double> volume, int materials) {
+  check_sizes(particles);
+  require_size(volume.size(), particles.size(), "particle volume");
+  MaterialSums sums(grid.cell_count(), materials);
   // Serial: a one-off handoff, and the sums stay deterministic.
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const grid::Vec3 x{particles.position[0][p], particles.position[1][p],
@@ -39,33 +53,27 @@ MaterialSums sum_per_material(const grid::UniformGrid& grid, const ParticleView&
     sums.mass[row] += particles.mass[p];
     sums.volume[row] += volume[p];
     sums.energy[row] += particles.internal_energy[p];  // extensive, T (3-5)
-    ++sums.particles[row];
+    ++sums.contributors[row];
   }
   return sums;
 }
 
-void require_size(std::size_t got, std::size_t want, const char* name) {
-  if (got != want)
-    throw Error(std::string("material start: ") + name + " must have " + std::to_string(want) +
-                " entries, got " + std::to_string(got));
-}
-
-enum class CellKind { empty, single, mixed, mixed_fallback };
-
-}  // namespace
-
 MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& particles,
                              std::span<const double> volume, const ConservedView& cells,
                              int material_count) {
-  check_sizes(particles);
+  return material_start(grid, particle_material_sums(grid, particles, volume, material_count),
+                        cells);
+}
+
+MaterialStart material_start(const grid::UniformGrid& grid, const MaterialSums& sums,
+                             const ConservedView& cells) {
   check_sizes(cells, grid.cell_count());
-  require_size(volume.size(), particles.size(), "particle volume");
-  if (material_count < 1)
-    throw Error("material start: material_count must be >= 1, got " +
-                std::to_string(material_count));
+  const int material_count = sums.material_count;
   const auto materials = static_cast<std::size_t>(material_count);
-  const MaterialSums sums = sum_per_material(grid, particles, volume, material_count);
   const std::size_t n = grid.cell_count();
+  for (const auto* values : {&sums.mass, &sums.volume, &sums.energy})
+    require_size(values->size(), n * materials, "material sums");
+  require_size(sums.contributors.size(), n * materials, "material contributors");
   const double cell_volume = grid.cell_volume();
   MaterialStart out;
   out.material_count = material_count;
@@ -79,7 +87,7 @@ MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& 
     int present = 0;
     bool usable = true;
     for (std::size_t r = 0; r < materials; ++r) {
-      if (sums.particles[row + r] == 0) continue;
+      if (sums.contributors[row + r] == 0) continue;
       ++present;
       m_sum += sums.mass[row + r];
       v_sum += sums.volume[row + r];
@@ -101,7 +109,7 @@ MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& 
       // in them: a round-off-negative e_c leaves the row at 0 (no state).
       if (!(e_c >= 0.0 && std::isfinite(e_c))) return;
       for (std::size_t r = 0; r < materials; ++r)
-        if (sums.particles[row + r] > 0) {
+        if (sums.contributors[row + r] > 0) {
           out.volume_fraction[row + r] = 1.0;
           out.density[row + r] = rho_c;
           out.energy[row + r] = e_c;
@@ -116,7 +124,7 @@ MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& 
     }
     const double k = u_c * m_sum / (m_c * e_sum);  // sum_r m_r' e_r = U_c
     for (std::size_t r = 0; r < materials; ++r) {
-      if (sums.particles[row + r] == 0) continue;
+      if (sums.contributors[row + r] == 0) continue;
       const double theta = sums.volume[row + r] / v_sum;     // T (3-23)
       const double mass = sums.mass[row + r] / m_sum * m_c;  // scaled to m_c, T (3-3)
       out.volume_fraction[row + r] = theta;

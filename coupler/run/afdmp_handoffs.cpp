@@ -16,6 +16,7 @@
 #include "coupler/handoff/placeholder.hpp"
 #include "coupler/handoff/sub_grid.hpp"
 #include "coupler/remap/radial_tracers.hpp"
+#include "coupler/remap/shell_material_sums.hpp"
 #include "coupler/remap/spherical_to_cartesian.hpp"
 #include "coupler/run/afdmp_fields.hpp"
 #include "coupler/run/field_transfer.hpp"
@@ -55,14 +56,20 @@ struct SphericalCells {
   Conserved remapped;             ///< of the remapped cells alone
   Conserved radial;               ///< the same with the radial impulse in momentum[0]
   Conserved fill;                 ///< of the ambient fill alone
+  /// Each material's start in the cells, if asked for: the shells of each
+  /// material and the fill, fitted to the cells (handoff/material_start.hpp).
+  std::optional<handoff::MaterialStart> start;
 };
 
 /// The fill is added in place and only the cells are kept: the remap's
 /// per-material parts and covered fractions (96 B per cell with two materials)
-/// are gone before the FDM builds its state, the handoff's memory peak.
+/// are gone before the FDM builds its state, the handoff's memory peak. With
+/// `start_materials` (the FDM takes each material's start), the shells' sums
+/// per material (56 B per cell with two) live until the start (48 B) is fitted.
 SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& centre,
                                const remap::RadialProfile& profile,
-                               const handoff::AmbientState& ambient) {
+                               const handoff::AmbientState& ambient,
+                               std::optional<int> start_materials) {
   remap::CartesianFields f = remap::remap_radial_profile(grid, centre, profile);
   const double volume = grid.cell_volume();
   SphericalCells out;
@@ -81,6 +88,8 @@ SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& 
                                               0.5 * (ambient.velocity[0] * ambient.velocity[0] +
                                                      ambient.velocity[1] * ambient.velocity[1] +
                                                      ambient.velocity[2] * ambient.velocity[2]));
+  std::optional<handoff::MaterialSums> sums;
+  if (start_materials) sums = remap::shell_material_sums(f, volume, ambient, *start_materials);
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     const double rest = std::max(0.0, 1.0 - f.covered_fraction[c]);
     const double density = rest * ambient.density;
@@ -95,6 +104,8 @@ SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& 
   out.cells.density = std::move(f.density);
   out.cells.momentum = std::move(f.momentum);
   out.cells.total_energy = std::move(f.total_energy);
+  f = {};
+  if (sums) out.start = handoff::material_start(grid, *sums, out.cells.view());
   return out;
 }
 
@@ -145,7 +156,7 @@ nlohmann::json start_json(const handoff::MaterialStart* start) {
   return {{"sent", true},
           {"mixed_cells", start->mixed_cells},
           {"fallback_cells", start->fallback_cells},
-          {"cells_without_particles", start->empty_cells}};
+          {"cells_without_state", start->empty_cells}};
 }
 
 }  // namespace
@@ -269,11 +280,16 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const remap::RadialShells shells = stage.shells();
   const remap::RadialProfile profile = shells.view();
   const auto ambient = handoff::ambient_state(scene);
-  SphericalCells remapped = spherical_cells(grid, stage.centre(), profile, ambient);
+  SphericalCells remapped = spherical_cells(
+      grid, stage.centre(), profile, ambient,
+      settings.material_import ? std::optional<int>(static_cast<int>(scene.materials.size()))
+                               : std::nullopt);
   const handoff::TracerPoints tracers = remap::radial_tracers(
       grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
-  const auto done = import_into_fdm(grid, std::move(remapped.cells), tracers, std::nullopt,
-                                    "spherical_to_fdm", hub, settings, imported);
+  const nlohmann::json material_json = start_json(remapped.start ? &*remapped.start : nullptr);
+  const auto done =
+      import_into_fdm(grid, std::move(remapped.cells), tracers, std::move(remapped.start),
+                      "spherical_to_fdm", hub, settings, imported);
 
   // The remap conserves mass, energy and the radial impulse of the part of the
   // profile inside the grid (its vector momentum cancels by symmetry).
@@ -310,6 +326,7 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
        {{"mass", stage_totals.mass},
         {"kinetic_energy", stage_totals.kinetic_energy},
         {"internal_energy", stage_totals.internal_energy}}},
+      {"material_start", material_json},
       {"import", transfer_json(imported)},
       {"wall_s", seconds_since(start)}};
   return record;

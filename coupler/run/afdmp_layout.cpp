@@ -168,7 +168,7 @@ AfdmpRegions afdmp_setup_regions(const AfdmpLayout& layout, AfdmpStart start, Au
   AfdmpRegions out;
   out.fdm.push_back(make_region(r::kAllCells, Kind::REGION_KIND_CELLS, layout.all_cells,
                                 {"rho", "momentum", "E"}));
-  if (material_import)  // each material's own start in the mixed cells, mpm_to_fdm
+  if (material_import)  // each material's own start in the mixed cells of either handoff
     for (const char* q : {"volume_fraction", "material_density", "material_energy"})
       out.fdm.back().add_quantities(q);
   out.fdm.push_back(make_region(r::kAllTracers, Kind::REGION_KIND_TRACERS, layout.all_cells,

@@ -307,6 +307,13 @@ TEST(AfdmpRun, A_spherical_charge_detonates_in_1D_and_is_remapped_conservatively
               handoff["stage_totals"]["mass"].get<double>() / 8, 1e-12);
   // The front reached handoff_radius = 40 mm.
   EXPECT_GE(handoff["trigger"]["value"].get<double>(), 0.04);
+  // The cells the products' surface cuts start each material at its shells' own
+  // state; every cell has shells or the fill, and none falls back.
+  const auto& start = handoff["material_start"];
+  EXPECT_TRUE(start["sent"].get<bool>());
+  EXPECT_GT(start["mixed_cells"].get<int>(), 0);
+  EXPECT_EQ(start["fallback_cells"].get<int>(), 0);
+  EXPECT_EQ(start["cells_without_state"].get<int>(), 0);
   // Run-long: the 1D stage and its ambient fill, then the FDM, hold the mass; the
   // 1D stage loses a little energy, the FDM none.
   EXPECT_LT(std::abs(run_long_error(summary, "mass")), kMassBound);
