@@ -141,6 +141,7 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
   queue.clear();
   for (std::size_t c = 0; c < cells; ++c)
     if (scratch.seeds[c] != 0) queue.push_back(c);
+  const std::size_t first_filled = queue.size();
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t c = queue[head];
     const int material = dominant_material(map, c);
@@ -150,13 +151,14 @@ void fill_empty_cells(const grid::UniformGrid& grid, const TracerBins& bins,
       queue.push_back(n);
     });
   }
-  // Theta of every empty cell (the filled ones are all reached: each unassigned region
-  // borders a known cell, as some cell holds tracers).
-  parallel_for(cells, [&](std::size_t c) {
-    if (bins.count(c) > 0) return;
+  // Theta of the filled cells, the queue past its seeds (each unassigned region borders a
+  // known cell, as some cell holds tracers, so all are reached). A kept cell holds
+  // previous's theta, which for its one material is this already.
+  for (std::size_t q = first_filled; q < queue.size(); ++q) {
+    const std::size_t c = queue[q];
     for (int r = 0; r < map.material_count; ++r)
       map.theta[static_cast<std::size_t>(r) * cells + c] = r == map.material[c] ? 1.0 : 0.0;
-  });
+  }
 }
 
 }  // namespace mpfd::fdm
