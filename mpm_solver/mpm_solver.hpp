@@ -240,7 +240,9 @@ class MpmSolver {
   [[nodiscard]] std::size_t scene_body_count() const { return scene_bodies_; }
   /// Replaces the state with a checkpoint's: particles, the materials of the
   /// injected bodies (in body order), clock, ledger. Throws mpfd::Error,
-  /// leaving the state as it was, if they do not fit this scene.
+  /// leaving the state as it was, if they do not fit this scene (a body,
+  /// material or history width it lacks) or a particle lies off the grid or at
+  /// a non-finite position.
   void restore(ParticleSet particles, std::span<const std::size_t> injected_body_materials,
                double time, std::int64_t steps, const BoundaryLedger& ledger,
                double particle_updates);

@@ -70,8 +70,6 @@ v1::CheckpointWritten write_checkpoint_atomically(
       fs::remove(partial_sidecar, ignored);
       throw;
     }
-  } catch (const ProtocolError&) {
-    throw;
   } catch (const std::exception& error) {
     refuse("Checkpoint to '" + file.string() + "' failed: " + error.what());
   }
@@ -95,8 +93,9 @@ fs::path verified_restore_file(const fs::path& output_dir, const std::string& re
   } catch (const std::exception& error) {
     refuse("Restore from '" + file.string() + "' failed: " + error.what());
   }
+  std::error_code unread;
   if (actual != recorded)
-    refuse("Restore: '" + file.string() + "' (" + std::to_string(fs::file_size(file)) +
+    refuse("Restore: '" + file.string() + "' (" + std::to_string(fs::file_size(file, unread)) +
            " bytes) has SHA-256 " + actual + "; '" + sidecar.string() + "' records " + recorded +
            ": the file is truncated or corrupt, or not the one Checkpoint wrote");
   return file;

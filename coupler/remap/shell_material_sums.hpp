@@ -13,11 +13,18 @@
 
 namespace mpfd::coupler::remap {
 
+/// A material's share of a cell below which it is round-off, not a contributor: a
+/// cell whose shells cover it to 1 - 1e-15 has no ambient fill, and a shell that
+/// touches a cell by 1e-15 of its volume none of its material (the remap's
+/// fields hold every bit of it; only the per-material start ignores it).
+inline constexpr double kNegligibleFraction = 1e-12;
+
 /// The sums of `f` (remapped on cells of volume `cell_volume` [m^3]) and the
-/// fill, as rows of `materials` materials (the scene's count). Throws
-/// mpfd::Error if the profile or the ambient material is not among them.
-[[nodiscard]] handoff::MaterialSums shell_material_sums(const CartesianFields& f,
-                                                        double cell_volume,
+/// fill, as rows of `materials` materials (the scene's count). Consumes `f`:
+/// its per-material arrays become the sums' (the handoff's memory peak), and it
+/// is left empty. Throws mpfd::Error if the profile or the ambient material is
+/// not among them.
+[[nodiscard]] handoff::MaterialSums shell_material_sums(CartesianFields&& f, double cell_volume,
                                                         const handoff::AmbientState& ambient,
                                                         int materials);
 

@@ -64,8 +64,9 @@ struct SphericalCells {
 /// The fill is added in place and only the cells are kept: the remap's
 /// per-material parts and covered fractions (96 B per cell with two materials)
 /// are gone before the FDM builds its state, the handoff's memory peak. With
-/// `start_materials` (the FDM takes each material's start), the shells' sums
-/// per material (56 B per cell with two) live until the start (48 B) is fitted.
+/// `start_materials` (the FDM takes each material's start), the per-material
+/// parts become the sums (+8 B per cell with two materials) and live until the
+/// start (48 B per cell) is fitted.
 SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& centre,
                                const remap::RadialProfile& profile,
                                const handoff::AmbientState& ambient,
@@ -88,8 +89,6 @@ SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& 
                                               0.5 * (ambient.velocity[0] * ambient.velocity[0] +
                                                      ambient.velocity[1] * ambient.velocity[1] +
                                                      ambient.velocity[2] * ambient.velocity[2]));
-  std::optional<handoff::MaterialSums> sums;
-  if (start_materials) sums = remap::shell_material_sums(f, volume, ambient, *start_materials);
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     const double rest = std::max(0.0, 1.0 - f.covered_fraction[c]);
     const double density = rest * ambient.density;
@@ -104,8 +103,11 @@ SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& 
   out.cells.density = std::move(f.density);
   out.cells.momentum = std::move(f.momentum);
   out.cells.total_energy = std::move(f.total_energy);
-  f = {};
-  if (sums) out.start = handoff::material_start(grid, *sums, out.cells.view());
+  if (start_materials) {
+    const handoff::MaterialSums sums =
+        remap::shell_material_sums(std::move(f), volume, ambient, *start_materials);
+    out.start = handoff::material_start(grid, sums, out.cells.view());
+  }
   return out;
 }
 

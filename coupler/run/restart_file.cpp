@@ -39,9 +39,9 @@ void RestartWriter::feature(const std::string& owner, const std::string& name, b
 void RestartReader::expect_feature(const std::string& owner, const std::string& name,
                                    bool offered) const {
   if ((number(owner, name) != 0) == offered) return;
-  refuse("was written with solvers that " + std::string(offered ? "did not offer" : "offered") +
-         " '" + name + "' (/" + owner + "/" + name + "); these " + (offered ? "do" : "do not") +
-         ": restart with the solvers of that run");
+  refuse("was written by a run that " + std::string(offered ? "did not use" : "used") + " '" +
+         name + "' (/" + owner + "/" + name + "); this one " + (offered ? "does" : "does not") +
+         ": restart with the solvers and the coupler of that run");
 }
 
 double RestartReader::number(const std::string& owner, const std::string& name) const {

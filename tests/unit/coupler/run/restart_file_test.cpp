@@ -36,12 +36,11 @@ TEST(RestartFile, A_feature_offered_then_must_be_offered_again) {
     }
     return std::string("no error");
   };
-  EXPECT_THAT(
-      refusal("fdm_outflow", false),
-      AllOf(HasSubstr(file.string()), HasSubstr("offered 'fdm_outflow' (/step/fdm_outflow)"),
-            HasSubstr("these do not")));
+  EXPECT_THAT(refusal("fdm_outflow", false),
+              AllOf(HasSubstr(file.string()), HasSubstr("used 'fdm_outflow' (/step/fdm_outflow)"),
+                    HasSubstr("this one does not")));
   EXPECT_THAT(refusal("mpm_outflow", true),
-              AllOf(HasSubstr("did not offer 'mpm_outflow'"), HasSubstr("these do:")));
+              AllOf(HasSubstr("did not use 'mpm_outflow'"), HasSubstr("this one does:")));
   std::filesystem::remove(file);
 }
 
