@@ -1,7 +1,9 @@
 #include "coupler/handoff/material_start.hpp"
 
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "common/core/error.hpp"
 #include "common/core/parallel_for.hpp"
@@ -65,7 +67,7 @@ MaterialStart material_start(const grid::UniformGrid& grid, const ParticleView& 
                         cells);
 }
 
-MaterialStart material_start(const grid::UniformGrid& grid, const MaterialSums& sums,
+MaterialStart material_start(const grid::UniformGrid& grid, MaterialSums sums,
                              const ConservedView& cells) {
   check_sizes(cells, grid.cell_count());
   const int material_count = sums.material_count;
@@ -75,28 +77,44 @@ MaterialStart material_start(const grid::UniformGrid& grid, const MaterialSums& 
     require_size(values->size(), n * materials, "material sums");
   require_size(sums.contributors.size(), n * materials, "material contributors");
   const double cell_volume = grid.cell_volume();
+  // Fitted in place: each row r of a cell is read (and summed over the cell) before
+  // it is written, and depends only on itself and those sums; no second set of rows
+  // at the handoff's memory peak.
   MaterialStart out;
   out.material_count = material_count;
-  out.volume_fraction.assign(n * materials, 0.0);
-  out.density.assign(n * materials, 0.0);
-  out.energy.assign(n * materials, 0.0);
+  out.volume_fraction = std::move(sums.volume);
+  out.density = std::move(sums.mass);
+  out.energy = std::move(sums.energy);
+  const std::vector<int>& contributors = sums.contributors;
+  std::vector<double>& volume = out.volume_fraction;  // V_r, then theta_r
+  std::vector<double>& mass = out.density;            // m_r, then rho_r
+  std::vector<double>& energy = out.energy;           // E_r, then e_r
   std::vector<CellKind> kind(n, CellKind::empty);
   parallel_for(n, [&](std::size_t c) {
     const std::size_t row = c * materials;
+    const auto set_rows = [&](auto value_of) {  // every row of the cell: (theta, rho, e)
+      for (std::size_t r = 0; r < materials; ++r) {
+        const auto [theta, rho, e] = value_of(r);
+        volume[row + r] = theta;
+        mass[row + r] = rho;
+        energy[row + r] = e;
+      }
+    };
+    const auto none = [](std::size_t) { return std::array<double, 3>{0.0, 0.0, 0.0}; };
     double m_sum = 0.0, v_sum = 0.0, e_sum = 0.0;
     int present = 0;
     bool usable = true;
     for (std::size_t r = 0; r < materials; ++r) {
-      if (sums.contributors[row + r] == 0) continue;
+      if (contributors[row + r] == 0) continue;
       ++present;
-      m_sum += sums.mass[row + r];
-      v_sum += sums.volume[row + r];
-      e_sum += sums.energy[row + r];
-      usable = usable && sums.mass[row + r] > 0.0 && sums.volume[row + r] > 0.0 &&
-               sums.energy[row + r] > 0.0 && std::isfinite(sums.mass[row + r]) &&
-               std::isfinite(sums.volume[row + r]) && std::isfinite(sums.energy[row + r]);
+      m_sum += mass[row + r];
+      v_sum += volume[row + r];
+      e_sum += energy[row + r];
+      usable = usable && mass[row + r] > 0.0 && volume[row + r] > 0.0 && energy[row + r] > 0.0 &&
+               std::isfinite(mass[row + r]) && std::isfinite(volume[row + r]) &&
+               std::isfinite(energy[row + r]);
     }
-    if (present == 0) return;
+    if (present == 0) return set_rows(none);
     const double rho_c = cells.density[c];
     const double m_c = rho_c * cell_volume;
     const double mx = cells.momentum[0][c], my = cells.momentum[1][c], mz = cells.momentum[2][c];
@@ -107,30 +125,28 @@ MaterialStart material_start(const grid::UniformGrid& grid, const MaterialSums& 
     if (present == 1) {
       // The FDM does not use these rows, but refuses a negative or non-finite energy
       // in them: a round-off-negative e_c leaves the row at 0 (no state).
-      if (!(e_c >= 0.0 && std::isfinite(e_c))) return;
-      for (std::size_t r = 0; r < materials; ++r)
-        if (sums.contributors[row + r] > 0) {
-          out.volume_fraction[row + r] = 1.0;
-          out.density[row + r] = rho_c;
-          out.energy[row + r] = e_c;
-        }
+      if (!(e_c >= 0.0 && std::isfinite(e_c))) return set_rows(none);
+      set_rows([&](std::size_t r) {
+        return contributors[row + r] > 0 ? std::array<double, 3>{1.0, rho_c, e_c}
+                                         : std::array<double, 3>{0.0, 0.0, 0.0};
+      });
       kind[c] = CellKind::single;
       return;
     }
     const double u_c = m_c * e_c;  // U_c = E_c V_c - |p_c|^2 / (2 m_c)
     if (!(usable && m_c > 0.0 && u_c > 0.0 && std::isfinite(u_c))) {
+      set_rows(none);
       kind[c] = CellKind::mixed_fallback;
       return;
     }
     const double k = u_c * m_sum / (m_c * e_sum);  // sum_r m_r' e_r = U_c
-    for (std::size_t r = 0; r < materials; ++r) {
-      if (sums.contributors[row + r] == 0) continue;
-      const double theta = sums.volume[row + r] / v_sum;     // T (3-23)
-      const double mass = sums.mass[row + r] / m_sum * m_c;  // scaled to m_c, T (3-3)
-      out.volume_fraction[row + r] = theta;
-      out.density[row + r] = mass / (theta * cell_volume);  // T (3-28) holds
-      out.energy[row + r] = k * sums.energy[row + r] / sums.mass[row + r];
-    }
+    set_rows([&](std::size_t r) {
+      if (contributors[row + r] == 0) return std::array<double, 3>{0.0, 0.0, 0.0};
+      const double theta = volume[row + r] / v_sum;                     // T (3-23)
+      const double m_r = mass[row + r] / m_sum * m_c;                   // scaled to m_c, T (3-3)
+      return std::array<double, 3>{theta, m_r / (theta * cell_volume),  // T (3-28) holds
+                                   k * energy[row + r] / mass[row + r]};
+    });
     kind[c] = CellKind::mixed;
   });
   for (const CellKind k : kind) {

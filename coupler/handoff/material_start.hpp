@@ -69,9 +69,10 @@ struct MaterialSums {
                                                   int material_count);
 
 /// The per-material start of every cell of `grid` from `sums` and the cells the
-/// handoff made (whose totals the start is fitted to). Throws mpfd::Error for an
+/// handoff made (whose totals the start is fitted to), fitted in place of the
+/// sums' arrays (pass them moved at a large handoff). Throws mpfd::Error for an
 /// array of the wrong size.
-[[nodiscard]] MaterialStart material_start(const grid::UniformGrid& grid, const MaterialSums& sums,
+[[nodiscard]] MaterialStart material_start(const grid::UniformGrid& grid, MaterialSums sums,
                                            const ConservedView& cells);
 
 /// material_start of particle_material_sums (mpm_to_fdm).

@@ -65,8 +65,8 @@ struct SphericalCells {
 /// per-material parts and covered fractions (96 B per cell with two materials)
 /// are gone before the FDM builds its state, the handoff's memory peak. With
 /// `start_materials` (the FDM takes each material's start), the per-material
-/// parts become the sums (+8 B per cell with two materials) and live until the
-/// start (48 B per cell) is fitted.
+/// parts become the sums (+8 B per cell with two materials), and the start
+/// (48 B per cell) is fitted in their place.
 SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& centre,
                                const remap::RadialProfile& profile,
                                const handoff::AmbientState& ambient,
@@ -104,9 +104,9 @@ SphericalCells spherical_cells(const grid::UniformGrid& grid, const grid::Vec3& 
   out.cells.momentum = std::move(f.momentum);
   out.cells.total_energy = std::move(f.total_energy);
   if (start_materials) {
-    const handoff::MaterialSums sums =
-        remap::shell_material_sums(std::move(f), volume, ambient, *start_materials);
-    out.start = handoff::material_start(grid, sums, out.cells.view());
+    out.start = handoff::material_start(
+        grid, remap::shell_material_sums(std::move(f), volume, ambient, *start_materials),
+        out.cells.view());
   }
   return out;
 }
@@ -152,9 +152,8 @@ handoff::MaterialStart embed_start(const grid::UniformGrid& grid, const handoff:
   return start;
 }
 
-nlohmann::json start_json(const handoff::MaterialStart* start) {
-  if (start == nullptr)
-    return {{"sent", false}, {"why", "the FDM lacks material_import: the cells' state"}};
+nlohmann::json start_json(const handoff::MaterialStart* start, const char* why_not) {
+  if (start == nullptr) return {{"sent", false}, {"why", why_not}};
   return {{"sent", true},
           {"mixed_cells", start->mixed_cells},
           {"fallback_cells", start->fallback_cells},
@@ -240,7 +239,8 @@ HandoffRecord handoff_mpm_to_fdm(const config::Scene& scene, const AfdmpLayout& 
   }
   // What the FDM should hold: the fluid cells sent plus the FSI placeholder.
   const Conserved whole = cell_conserved(cells.view(), grid.cell_volume());
-  const nlohmann::json material_json = start_json(material ? &*material : nullptr);
+  const nlohmann::json material_json = start_json(
+      material ? &*material : nullptr, "the FDM lacks material_import: the cells' state");
   const auto done = import_into_fdm(grid, std::move(cells), fdm.tracers, std::move(material),
                                     "mpm_to_fdm", hub, settings, imported);
 
@@ -282,13 +282,20 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const remap::RadialShells shells = stage.shells();
   const remap::RadialProfile profile = shells.view();
   const auto ambient = handoff::ambient_state(scene);
+  // The FDM takes a start row only where its tracers make a cell mixed; one tracer per
+  // cell (the radial tracers at sub-cell centres) makes none, and the rows would be
+  // 48 B per cell for nothing.
+  const bool with_start = settings.material_import && scene.solver.fdm.tracers_per_axis > 1;
   SphericalCells remapped = spherical_cells(
       grid, stage.centre(), profile, ambient,
-      settings.material_import ? std::optional<int>(static_cast<int>(scene.materials.size()))
-                               : std::nullopt);
+      with_start ? std::optional<int>(static_cast<int>(scene.materials.size())) : std::nullopt);
   const handoff::TracerPoints tracers = remap::radial_tracers(
       grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
-  const nlohmann::json material_json = start_json(remapped.start ? &*remapped.start : nullptr);
+  const nlohmann::json material_json =
+      start_json(remapped.start ? &*remapped.start : nullptr,
+                 settings.material_import
+                     ? "one tracer per cell: the FDM makes no cell mixed, the cells' state"
+                     : "the FDM lacks material_import: the cells' state");
   const auto done =
       import_into_fdm(grid, std::move(remapped.cells), tracers, std::move(remapped.start),
                       "spherical_to_fdm", hub, settings, imported);
