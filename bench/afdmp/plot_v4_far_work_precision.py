@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Work-precision plot of V4 far-octant series (bench/afdmp/v4_far.sh runs).
 
-Usage: plot_v4_far_work_precision.py OUT.png LABEL=DIR/v4_far.csv [LABEL=... ...]
-For each series and each run in it (not the 1D reference): wall time against the
+Usage: plot_v4_far_work_precision.py OUT.png LABEL=DIR/v4_far.csv[,DIR2/v4_far.csv ...] [LABEL=...]
+A series may join the v4_far.csv of several invocations (comma-separated), e.g.
+a finer grid run later. For each series and each run in it (not the 1D reference): wall time against the
 mean peak error over the FDM gauges (Z >= 1), against the converged 1D model
 (bench/afdmp/v4_model_reference.py, the solver's own error) and against
 Kingery-Bulmash. Prints the same as a table. Wall times compare runs of one
@@ -44,9 +45,10 @@ def main():
     for arg in sys.argv[2:]:
         name, path = arg.rsplit("=", 1)
         try:
-            runs = series(path)
+            runs = sorted((run for part in path.split(",") for run in series(part)),
+                          key=lambda r: -r[1])
         except OSError as e:
-            raise SystemExit(f"plot_v4_far_work_precision.py: cannot read {path}: {e.strerror}")
+            raise SystemExit(f"plot_v4_far_work_precision.py: cannot read {e.filename}: {e.strerror}")
         except KeyError as e:
             raise SystemExit(f"{path}: no column {e}; expected bench/afdmp/v4_far.py's v4_far.csv")
         if not runs:

@@ -219,6 +219,9 @@ struct AfdmpSpherical {
   int particles_per_cell = 2;            ///< [-], >= 2
   ShapeFunction shape_function = ShapeFunction::gimp;  ///< linear or gimp
   double cfl = 0.2;                                    ///< [-], in (0, 1]
+  /// Send each material's own start in the cells the products' surface cuts
+  /// (coupler/remap/shell_material_sums.hpp); off: they start from the cell's state.
+  bool material_start = false;
 };
 
 struct AfdmpOptions {

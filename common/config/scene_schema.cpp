@@ -302,7 +302,11 @@ std::shared_ptr<const Table<Solver>> solver_table() {
           "mpm_solver/spherical/README.md)")
       .optional("cfl", &AfdmpSpherical::cfl, Number("-", Range::open_closed(0, 1)),
                 "Courant number of the 1D stage (strong blasts need <= 0.2, "
-                "mpm_solver/spherical/README.md)");
+                "mpm_solver/spherical/README.md)")
+      .optional("material_start", &AfdmpSpherical::material_start, Boolean{},
+                "at the remap, each material of a cell the products' surface cuts starts from "
+                "its own shells' state, not the cell's (needs solver.fdm.tracers_per_axis > 1; "
+                "costs ~100 B per cell at the handoff's memory peak, docs/afdmp.md)");
   auto afdmp = make_table<AfdmpOptions>("solver.afdmp", "Options of AFDMP (T §3.2).");
   afdmp
       ->optional("start", &AfdmpOptions::start,

@@ -28,8 +28,9 @@ namespace mpfd::coupler {
 struct HandoffSettings {
   std::uint64_t max_chunk_bytes = cosim::kDefaultMaxChunkBytes;
   std::chrono::milliseconds timeout{300000};
-  /// The FDM offers material_import: mpm_to_fdm and spherical_to_fdm also send
-  /// each material's own start in the mixed cells (coupler/handoff/material_start.hpp).
+  /// The FDM offers material_import: mpm_to_fdm (and spherical_to_fdm, if the scene
+  /// asks) also send each material's own start in the mixed cells
+  /// (coupler/handoff/material_start.hpp).
   bool material_import = false;
 };
 

@@ -296,7 +296,8 @@ TEST(AfdmpRun, A_spherical_charge_detonates_in_1D_and_is_remapped_conservatively
   const auto scene = scene_variant("afdmp_free_air_3d_1d", "v4s",
                                    {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"},
                                     {"end: 3.4e-4", "end: 2.0e-5"},
-                                    {"tracers_per_axis: 1", "tracers_per_axis: 2"}});
+                                    {"tracers_per_axis: 1", "tracers_per_axis: 2"},
+                                    {"cfl: 0.2\n", "cfl: 0.2\n      material_start: true\n"}});
   const auto summary = run(scene, "out");
   EXPECT_THAT(phase_names(summary),
               ::testing::ElementsAre("spherical_detonation", "fdm_blast", "done"));
@@ -326,16 +327,23 @@ TEST(AfdmpRun, A_spherical_charge_detonates_in_1D_and_is_remapped_conservatively
   expect_momentum_round_off(summary);
 }
 
-// With one tracer per cell no imported cell is mixed, so the FDM would read no start row:
-// none is sent (48 B per cell for nothing), and the summary says why.
-TEST(AfdmpRun, A_1D_start_with_one_tracer_per_cell_sends_no_material_start) {
-  const auto scene = scene_variant(
-      "afdmp_free_air_3d_1d", "v4s1",
-      {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"}, {"end: 3.4e-4", "end: 1.0e-5"}});
-  const auto summary = run(scene, "out");
-  const auto& start = summary["details"]["afdmp"]["handoffs"][0]["material_start"];
-  EXPECT_FALSE(start["sent"].get<bool>());
-  EXPECT_THAT(start["why"].get<std::string>(), ::testing::HasSubstr("one tracer per cell"));
+// The material start at the remap is the scene's choice (off by default: it costs memory
+// and the far field does not see it), and with one tracer per cell no imported cell is
+// mixed, so the FDM would read no start row: none is sent, and the summary says why.
+TEST(AfdmpRun, A_1D_start_sends_no_material_start_unless_asked_and_usable) {
+  const auto why_not = [](const std::string& tag, const std::string& options) {
+    const auto scene = scene_variant("afdmp_free_air_3d_1d", tag,
+                                     {{"cells: [100, 100, 100]", "cells: [20, 20, 20]"},
+                                      {"end: 3.4e-4", "end: 1.0e-5"},
+                                      {"cfl: 0.2\n", "cfl: 0.2\n" + options}});
+    const auto summary = run(scene, "out");
+    const auto& start = summary["details"]["afdmp"]["handoffs"][0]["material_start"];
+    EXPECT_FALSE(start["sent"].get<bool>()) << tag;
+    return start["why"].get<std::string>();
+  };
+  EXPECT_THAT(why_not("v4s_off", ""), ::testing::HasSubstr("material_start is off"));
+  EXPECT_THAT(why_not("v4s_one", "      material_start: true\n"),
+              ::testing::HasSubstr("one tracer per cell"));
 }
 
 TEST(AfdmpRun, The_FSI_zone_wakes_as_particles_when_the_blast_reaches_it) {
