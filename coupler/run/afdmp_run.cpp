@@ -75,7 +75,10 @@ CoupledRunReport run_afdmp(const config::Scene& scene, const std::string& scene_
     check_capabilities(hellos, mpm_needed, layout.fsi_cells.has_value());
     const AuditOutflow outflow = audit_outflow(hellos, mpm_needed);
     // v1.2 additive (proto/README.md §15 rule 8): without it, today's cell-state start.
-    const bool material_import = offers(hellos[0], "material_import");
+    // The 1D start's remap sends it only if the scene asks (solver.afdmp.spherical).
+    const bool material_import =
+        offers(hellos[0], "material_import") &&
+        (start == AfdmpStart::mpm || scene.solver.afdmp.spherical.material_start);
     auto messages =
         setups(scene, scene_text, afdmp_setup_regions(layout, start, outflow, material_import),
                options.out_dir);
