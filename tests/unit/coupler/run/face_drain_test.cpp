@@ -13,6 +13,15 @@ using ::testing::HasSubstr;
 
 constexpr double kCellVolume = 2.0e-3;  // m^3
 
+/// Two deposits: the first takes 0.9 of face cell 3's 1 kg/m^3, the second 0.1 of
+/// face cell `second`'s (0.5 taken back, 0.4 brought by particles, per m^3).
+void deposit_twice(FaceDrainWatch& watch, std::size_t second) {
+  watch.start_deposit();
+  watch.observe(3, 1.0, -0.9, -0.9 * kCellVolume, kCellVolume);
+  watch.start_deposit();
+  watch.observe(second, 1.0, -0.1, -0.5 * kCellVolume, kCellVolume);
+}
+
 TEST(FaceDrainWatch, Keeps_the_face_cell_the_last_deposit_took_the_largest_share_of) {
   FaceDrainWatch watch;
   watch.start_deposit();
@@ -34,10 +43,7 @@ TEST(FaceDrainWatch, Keeps_the_face_cell_the_last_deposit_took_the_largest_share
 // last still counts.
 TEST(FaceDrainWatch, The_last_two_deposits_count_and_the_run_keeps_its_largest_share) {
   FaceDrainWatch watch;
-  watch.start_deposit();
-  watch.observe(3, 1.0, -0.9, -0.9 * kCellVolume, kCellVolume);
-  watch.start_deposit();
-  watch.observe(3, 1.0, -0.1, -0.5 * kCellVolume, kCellVolume);
+  deposit_twice(watch, 3);
   EXPECT_DOUBLE_EQ(watch.last().share, 0.1);
   EXPECT_NEAR(watch.last().particle_mass, 0.4 * kCellVolume, 1e-18);
   EXPECT_DOUBLE_EQ(watch.worst().share, 0.9);
@@ -52,10 +58,7 @@ TEST(FaceDrainWatch, The_last_two_deposits_count_and_the_run_keeps_its_largest_s
 // an error in the first step after the restart names the cause the run would have.
 TEST(FaceDrainWatch, A_resumed_watch_names_the_cause_as_the_watch_it_was_saved_from) {
   FaceDrainWatch running;
-  running.start_deposit();
-  running.observe(3, 1.0, -0.9, -0.9 * kCellVolume, kCellVolume);
-  running.start_deposit();
-  running.observe(4, 1.0, -0.1, -0.5 * kCellVolume, kCellVolume);
+  deposit_twice(running, 4);
   FaceDrainWatch resumed;
   resumed.resume(running.last(), running.previous(), running.run_max_share());
   EXPECT_EQ(resumed.worst().face_cell, 3u);
