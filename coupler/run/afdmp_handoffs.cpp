@@ -282,12 +282,11 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
   const remap::RadialShells shells = stage.shells();
   const remap::RadialProfile profile = shells.view();
   const auto ambient = handoff::ambient_state(scene);
-  // Asked for by the scene (it costs memory at the handoff, and the far field does not
-  // see it: docs/afdmp.md). The FDM takes a start row only where its tracers make a
-  // cell mixed; one tracer per cell (the radial tracers at sub-cell centres) makes none.
-  const bool asked = scene.solver.afdmp.spherical.material_start;
-  const bool with_start =
-      asked && settings.material_import && scene.solver.fdm.tracers_per_axis > 1;
+  // settings.material_import holds only if the scene asked for the start (it costs
+  // memory at the handoff, and the far field does not see it: docs/afdmp.md). The FDM
+  // takes a start row only where its tracers make a cell mixed; one tracer per cell
+  // (the radial tracers at sub-cell centres) makes none.
+  const bool with_start = settings.material_import && scene.solver.fdm.tracers_per_axis > 1;
   SphericalCells remapped = spherical_cells(
       grid, stage.centre(), profile, ambient,
       with_start ? std::optional<int>(static_cast<int>(scene.materials.size())) : std::nullopt);
@@ -295,10 +294,11 @@ HandoffRecord handoff_spherical_to_fdm(const config::Scene& scene, const Spheric
       grid, stage.centre(), profile, ambient.material, scene.solver.fdm.tracers_per_axis);
   const nlohmann::json material_json =
       start_json(remapped.start ? &*remapped.start : nullptr,
-                 !asked ? "solver.afdmp.spherical.material_start is off: the cells' state"
-                 : settings.material_import
-                     ? "one tracer per cell: the FDM makes no cell mixed, the cells' state"
-                     : "the FDM lacks material_import: the cells' state");
+                 !scene.solver.afdmp.spherical.material_start
+                     ? "solver.afdmp.spherical.material_start is off: the cells' state"
+                 : !settings.material_import
+                     ? "the FDM lacks material_import: the cells' state"
+                     : "one tracer per cell: the FDM makes no cell mixed, the cells' state");
   const auto done =
       import_into_fdm(grid, std::move(remapped.cells), tracers, std::move(remapped.start),
                       "spherical_to_fdm", hub, settings, imported);
