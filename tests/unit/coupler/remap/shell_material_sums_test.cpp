@@ -146,6 +146,25 @@ TEST(ShellMaterialSums, OnlyTheCellsTheSurfaceCutsHoldTwoMaterials) {
   EXPECT_GT(mixed, 20U);
 }
 
+// A scene with a material the 1D stage does not hold (here a third): its rows are laid
+// out among the scene's and stay empty; the profile's rows are the same numbers.
+TEST(ShellMaterialSums, RowsOfAMaterialTheProfileLacksStayEmpty) {
+  const ChargeOctant o;
+  const handoff::MaterialSums three =
+      shell_material_sums(CartesianFields(o.fields), o.grid.cell_volume(), kAmbient, 3);
+  ASSERT_EQ(three.mass.size(), 3 * o.grid.cell_count());
+  for (std::size_t c = 0; c < o.grid.cell_count(); ++c) {
+    for (std::size_t r = 0; r < 2; ++r) {
+      EXPECT_EQ(three.mass[3 * c + r], o.sums.mass[2 * c + r]) << c;
+      EXPECT_EQ(three.volume[3 * c + r], o.sums.volume[2 * c + r]) << c;
+      EXPECT_EQ(three.energy[3 * c + r], o.sums.energy[2 * c + r]) << c;
+      EXPECT_EQ(three.contributors[3 * c + r], o.sums.contributors[2 * c + r]) << c;
+    }
+    EXPECT_EQ(three.mass[3 * c + 2], 0.0) << c;
+    EXPECT_EQ(three.contributors[3 * c + 2], 0) << c;
+  }
+}
+
 TEST(ShellMaterialSums, AnAmbientMaterialBeyondTheScenesIsRefused) {
   const ChargeOctant o;
   handoff::AmbientState ambient = kAmbient;
